@@ -1,0 +1,23 @@
+# Every dependency is a Debian package (scripts/install-deps.sh installs them).
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(OpenMP REQUIRED COMPONENTS CXX)
+find_package(yaml-cpp REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(GTest REQUIRED)
+find_package(HDF5 REQUIRED COMPONENTS C)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
+find_library(FFTW3_THREADS_LIBRARY NAMES fftw3_threads REQUIRED)
+if(SUSPEND_BENCH)
+  find_package(benchmark REQUIRED)
+endif()
+
+add_library(suspend_hdf5 INTERFACE)
+target_include_directories(suspend_hdf5 SYSTEM INTERFACE ${HDF5_INCLUDE_DIRS})
+target_link_libraries(suspend_hdf5 INTERFACE ${HDF5_LIBRARIES})
+target_compile_definitions(suspend_hdf5 INTERFACE ${HDF5_DEFINITIONS} H5_USE_110_API)
+add_library(suspend::hdf5 ALIAS suspend_hdf5)
+
+add_library(suspend_fftw INTERFACE)
+target_link_libraries(suspend_fftw INTERFACE ${FFTW3_THREADS_LIBRARY} PkgConfig::FFTW3)
+add_library(suspend::fftw ALIAS suspend_fftw)

@@ -1,0 +1,45 @@
+// Periodic box with Lees-Edwards boundaries (paper 000, eq. 16; DESIGN.md section 3).
+// Flow x, gradient y, vorticity z. The periodic image of the cell at y + L_y is displaced by +shear_offset in x,
+// where shear_offset = strain * L_y wrapped into [-L_x/2, L_x/2). Only the wrapped offset matters for geometry,
+// so the strain may grow without bound.
+#pragma once
+#include "core/vec.hpp"
+
+namespace suspend {
+
+struct MinimumImage {
+  Vec3 d;        // r_j(image) - r_i, the shortest separation vector
+  int y_images;  // k such that the image of j used is r_j - k L_y (shifted by -k offset in x)
+};
+
+class Box {
+ public:
+  Box() = default;
+  Box(double lx, double ly, double lz) : length_(lx, ly, lz) {}
+  explicit Box(const Vec3& length) : length_(length) {}
+
+  const Vec3& length() const { return length_; }
+  double volume() const { return length_.prod(); }
+  double shear_offset() const { return offset_; }
+
+  // Sets the offset from the accumulated strain; works for any strain history (stress control, oscillation).
+  void set_strain(double strain);
+  // Sets the offset directly (wrapped into [-L_x/2, L_x/2)).
+  void set_shear_offset(double offset);
+
+  // Minimum-image separation from r_i to r_j under Lees-Edwards (paper 000, eq. 16).
+  MinimumImage minimum_image(const Vec3& ri, const Vec3& rj) const;
+
+  // Maps r into the primary cell [0, L)^3. Returns the number of times the y face was crossed upwards
+  // (negative: downwards) so that the caller can remap the x velocity by -crossings * shear_rate * L_y (eq. 16d).
+  int wrap(Vec3& r) const;
+
+ private:
+  Vec3 length_{1.0, 1.0, 1.0};
+  double offset_ = 0.0;
+};
+
+// Wraps x into [-L/2, L/2).
+double wrap_centered(double x, double length);
+
+}  // namespace suspend

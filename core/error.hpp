@@ -1,0 +1,19 @@
+// The two ways a run can fail, kept apart because users act on them differently:
+// InputError  -> the case file or command line is wrong (exit code 2, nothing written);
+// NumericalError -> the physics went wrong mid-run (stop, keep last good state, exit code 3).
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace suspend {
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+struct NumericalError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+inline constexpr int exit_input_error = 2;
+inline constexpr int exit_numerical_error = 3;
+inline constexpr int exit_interrupted = 130;
+}  // namespace suspend
