@@ -3,4 +3,6 @@
 #include <CLI/CLI.hpp>
 
 namespace suspend::app {
+void add_run_command(CLI::App& app);
+void add_check_command(CLI::App& app);
 }  // namespace suspend::app

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <string>
 
+#include "apps/commands.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 
@@ -10,10 +11,23 @@ int main(int argc, char** argv) {
   CLI::App app{"suspend: rheology of dense non-Brownian suspensions (lubrication-DEM and FCM)"};
   app.set_version_flag("--version", std::string("suspend ") + suspend::version + " (git " + suspend::git_commit + ")");
   app.require_subcommand(1);
+  suspend::app::add_run_command(app);
+  suspend::app::add_check_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : suspend::exit_input_error;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::cerr << "error: " << e.what() << " (see suspend --help)\n";
+    return suspend::exit_input_error;
+  } catch (const suspend::InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return suspend::exit_input_error;
+  } catch (const suspend::NumericalError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return suspend::exit_numerical_error;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
   }
   return 0;
 }

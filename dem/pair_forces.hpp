@@ -1,0 +1,96 @@
+// The generic pair driver (STYLE.md: pure law + generic driver). It owns the loop over interacting pairs, the
+// Lees-Edwards images, Newton's third law and the accumulation of forces, torques and stress by contribution.
+//
+// Determinism: the pairs that interact are first compacted, in list order, to those within the exact interaction
+// range; work is then split over threads by position in that compact list and per-thread sums are reduced in
+// thread order. The result depends only on the configuration and the thread count, never on when the
+// neighbour list was rebuilt, so a restarted run reproduces an uninterrupted one bit for bit.
+#pragma once
+#include <omp.h>
+
+#include <vector>
+
+#include "core/box.hpp"
+#include "core/particles.hpp"
+#include "core/stress.hpp"
+#include "dem/contact/pair_geometry.hpp"
+#include "dem/neighbour_search.hpp"
+
+namespace suspend {
+
+struct ActivePair {
+  std::uint32_t i, j;
+  int y_images;  // Lees-Edwards image index of j (for velocity corrections)
+  PairGeometry geometry;
+};
+
+struct PairSums {
+  std::vector<Vec3> force, torque;  // per particle
+  StressTensors virial;             // sum over pairs of -sym(d F_j^T), not yet divided by the volume
+  double max_overlap = 0.0;         // largest -gap over all pairs
+  std::uint32_t max_overlap_i = 0, max_overlap_j = 0;
+  std::size_t contacts = 0;  // pairs with gap < 0
+};
+
+// Pairs of the list whose gap is below interaction_gap, with their geometry.
+void compact_active_pairs(const std::vector<NeighbourPair>& list, const Particles& p, const Box& box,
+                          double interaction_gap, std::vector<ActivePair>& active);
+
+// Evaluates law(geometry) -> PairForce on every active pair and accumulates into sums. `local` is per-thread
+// scratch kept by the caller so that steps do not allocate.
+template <class Law>
+void accumulate_pair_forces(const std::vector<ActivePair>& active, std::size_t n_particles, const Law& law,
+                            PairSums& sums, std::vector<PairSums>& local) {
+  const int nthreads = omp_get_max_threads();
+  local.resize(nthreads);
+#pragma omp parallel num_threads(nthreads)
+  {
+    const int t = omp_get_thread_num();
+    PairSums& mine = local[t];
+    mine.force.assign(n_particles, Vec3::Zero());
+    mine.torque.assign(n_particles, Vec3::Zero());
+    mine.virial.clear();
+    mine.contacts = 0;
+    mine.max_overlap = 0.0;
+    const std::size_t np = active.size();
+    const std::size_t begin = np * t / nthreads, end = np * (t + 1) / nthreads;
+    for (std::size_t k = begin; k < end; ++k) {
+      const ActivePair& pr = active[k];
+      const PairForce f = law(pr.geometry);
+      const Vec3 fj = f.total_on_j();
+      mine.force[pr.j] += fj;
+      mine.force[pr.i] -= fj;
+      mine.torque[pr.i] += f.torque_i;
+      mine.torque[pr.j] += f.torque_j;
+      for (std::size_t c = 0; c < contribution_count; ++c)
+        if (f.on_j[c].squaredNorm() > 0.0) mine.virial.part[c] -= sym_outer(pr.geometry.d, f.on_j[c]);
+      const double overlap = -pr.geometry.gap();
+      if (overlap > 0.0) ++mine.contacts;
+      if (overlap > mine.max_overlap) {
+        mine.max_overlap = overlap;
+        mine.max_overlap_i = pr.i;
+        mine.max_overlap_j = pr.j;
+      }
+    }
+  }
+  sums.force.assign(n_particles, Vec3::Zero());
+  sums.torque.assign(n_particles, Vec3::Zero());
+  sums.virial.clear();
+  sums.max_overlap = 0.0;
+  sums.contacts = 0;
+  for (const PairSums& l : local) {
+    for (std::size_t i = 0; i < n_particles; ++i) {
+      sums.force[i] += l.force[i];
+      sums.torque[i] += l.torque[i];
+    }
+    for (std::size_t c = 0; c < contribution_count; ++c) sums.virial.part[c] += l.virial.part[c];
+    sums.contacts += l.contacts;
+    if (l.max_overlap > sums.max_overlap) {
+      sums.max_overlap = l.max_overlap;
+      sums.max_overlap_i = l.max_overlap_i;
+      sums.max_overlap_j = l.max_overlap_j;
+    }
+  }
+}
+
+}  // namespace suspend

@@ -1,0 +1,214 @@
+#include "io/case.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "io/schema_reader.hpp"
+#include "io/units.hpp"
+
+namespace suspend::io {
+
+namespace {
+
+void read_particles(SchemaReader r, Case& c) {
+  ParticlesCase& p = c.particles;
+  p.phi = r.number("phi", Range::open(0.0, 0.74));
+  if (auto n = r.optional_integer("count", 2, 100'000'000)) p.count = *n;
+  const bool has_species = r.has("species"), has_bidisperse = r.has("bidisperse");
+  if (has_species && has_bidisperse)
+    r.fail("bidisperse", "give either 'species' or 'bidisperse', not both");
+  if (has_species) {
+    for (SchemaReader s : r.children("species")) {
+      Species sp{s.number("radius", Range::positive()), s.number("volume_share", Range::open_closed(0.0, 1.0))};
+      s.finish();
+      p.species.push_back(sp);
+    }
+    if (p.species.empty()) r.fail("species", "the list is empty; give at least one {radius, volume_share}");
+  } else if (has_bidisperse) {
+    SchemaReader b = r.child("bidisperse");
+    const double ratio = b.number("size_ratio", Range::closed(1.0, 100.0));
+    const double large = b.number("large_volume_share", 0.5, Range::open(0.0, 1.0));
+    b.finish();
+    p.species = {{1.0, 1.0 - large}, {ratio, large}};
+  } else {
+    p.species = {{1.0, 1.0}};
+  }
+  double share = 0.0, a_min = INFINITY;
+  for (const Species& s : p.species) share += s.volume_share, a_min = std::min(a_min, s.radius);
+  if (std::abs(share - 1.0) > 1e-9)
+    r.fail(has_species ? "species" : "bidisperse",
+           "volume shares sum to " + exact(share) + "; they must sum to 1");
+  if (std::abs(a_min - 1.0) > 1e-12)
+    r.fail(has_species ? "species" : "bidisperse",
+           "the smallest radius is the length unit a_1 and must be 1 (got " + exact(a_min) + ")");
+
+  SchemaReader init = r.child("initial");
+  p.initial = init.choice("from", "random", {"random", "file"});
+  if (p.initial == "file") {
+    p.initial_file = init.text("file", "");
+    if (p.initial_file.empty()) init.fail("file", "missing; initial.from = file needs a file path");
+    std::filesystem::path f(p.initial_file);
+    if (f.is_relative() && !c.source.empty())
+      f = std::filesystem::path(c.source).parent_path() / f;
+    if (!std::filesystem::is_regular_file(f))
+      init.fail("file", "'" + p.initial_file + "' does not exist or is not a file");
+    p.initial_file = f.lexically_normal().string();
+  }
+  p.min_gap = init.number("min_gap", p.min_gap, Range::closed(0.0, 0.5));
+  init.finish();
+  r.finish();
+}
+
+}  // namespace
+
+Case parse_case(const YAML::Node& root, const std::string& source) {
+  Case c;
+  c.source = source;
+  SchemaReader top(root, "");
+  c.title = top.text("title", "");
+  read_particles(top.child("particles"), c);
+
+  {
+    SchemaReader b = top.child("box");
+    const bool has_cube = b.has("cube"), has_length = b.has("length");
+    if (has_cube && has_length) b.fail("cube", "give either 'cube' or 'length', not both");
+    if (has_cube) {
+      const double l = b.number("cube", Range::positive());
+      c.box = Vec3(l, l, l);
+    } else if (has_length) {
+      SchemaReader l = b.child("length");
+      c.box = Vec3(l.number("x", Range::positive()), l.number("y", Range::positive()), l.number("z", Range::positive()));
+      l.finish();
+    }
+    b.finish();
+  }
+  if (c.box && c.particles.count)
+    throw InputError("particles.count and box are both given; give one of them (the other follows from phi)");
+  if (!c.box && !c.particles.count)
+    throw InputError("particles.count: missing; give particles.count or box (the other follows from phi)");
+
+  {
+    SchemaReader f = top.child("flow");
+    c.flow = f.choice("type", "simple_shear", {"simple_shear"});
+    c.simulation.shear_rate = f.number("shear_rate", 1.0, Range::positive());
+    f.finish();
+  }
+  {
+    SchemaReader h = top.child("hydrodynamics");
+    c.hydrodynamics = h.choice("model", "pairwise", {"pairwise"});
+    h.finish();
+  }
+  {
+    SchemaReader k = top.child("contact");
+    c.contact_law = k.choice("law", "soft_repulsion", {"soft_repulsion"});
+    c.simulation.contact.kn = stiffness_from_k_hat(k.number("k_hat", 1.0e4, Range::positive()));
+    k.finish();
+  }
+  {
+    SchemaReader r = top.child("run");
+    c.run.strain = r.number("strain", c.run.strain, Range::positive());
+    c.run.average_from = r.number("average_from", std::min(c.run.average_from, 0.2 * c.run.strain),
+                                  Range::non_negative());
+    if (c.run.average_from >= c.run.strain)
+      r.fail("average_from", exact(c.run.average_from) + " must be below run.strain = " + exact(c.run.strain));
+    c.run.seed = r.integer("seed", 1, 0, 2'000'000'000);
+    c.run.threads = r.integer("threads", 0, 0, 4096);
+    c.simulation.max_overlap = r.number("max_overlap", c.simulation.max_overlap, Range::open_closed(0.0, 1.0));
+    c.simulation.skin = r.number("skin", c.simulation.skin, Range::positive());
+
+    SchemaReader t = r.child("time_step");
+    TimeStepParams& ts = c.simulation.time_step;
+    ts.mode = t.choice("mode", "adaptive", {"adaptive", "fixed"}) == "fixed" ? TimeStepParams::Mode::fixed
+                                                                             : TimeStepParams::Mode::adaptive;
+    ts.fixed = t.number("fixed", ts.fixed, Range::positive());
+    ts.max_displacement = t.number("max_displacement", ts.max_displacement, Range::positive());
+    ts.max = t.number("max", ts.max, Range::positive());
+    ts.stability = t.number("stability", ts.stability, Range::open_closed(0.0, 1.0));
+    t.finish();
+
+    SchemaReader o = r.child("output");
+    OutputCase& out = c.run.output;
+    out.series_every = o.number("series_every", out.series_every, Range::positive());
+    out.snapshot_every = o.number("snapshot_every", out.snapshot_every, Range::positive());
+    out.checkpoint_every = o.number("checkpoint_every", out.checkpoint_every, Range::positive());
+    out.checkpoint_seconds = o.number("checkpoint_seconds", out.checkpoint_seconds, Range::positive());
+    o.finish();
+    r.finish();
+  }
+  top.finish();
+  c.simulation.validate();
+  return c;
+}
+
+Case load_case(const std::string& path, const std::vector<std::string>& overrides) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": case file not found");
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path + ": not valid YAML at line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+  }
+  if (!root || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  for (const std::string& o : overrides) apply_override(root, o);
+  return parse_case(root, path);
+}
+
+namespace {
+// Numbers printed in their shortest exact form (0.1, not 0.10000000000000001), still read back as numbers.
+YAML::Node number_node(double v) { return YAML::Node(exact(v)); }
+}  // namespace
+
+YAML::Node to_yaml(const Case& c) {
+  YAML::Node n;
+  if (!c.title.empty()) n["title"] = c.title;
+  YAML::Node p = n["particles"];
+  p["phi"] = number_node(c.particles.phi);
+  if (c.particles.count) p["count"] = *c.particles.count;
+  for (const Species& s : c.particles.species) {
+    YAML::Node sp;
+    sp["radius"] = number_node(s.radius);
+    sp["volume_share"] = number_node(s.volume_share);
+    p["species"].push_back(sp);
+  }
+  p["initial"]["from"] = c.particles.initial;
+  if (c.particles.initial == "file") p["initial"]["file"] = c.particles.initial_file;
+  p["initial"]["min_gap"] = number_node(c.particles.min_gap);
+  if (c.box) {
+    n["box"]["length"]["x"] = number_node(c.box->x());
+    n["box"]["length"]["y"] = number_node(c.box->y());
+    n["box"]["length"]["z"] = number_node(c.box->z());
+  }
+  n["flow"]["type"] = c.flow;
+  n["flow"]["shear_rate"] = number_node(c.simulation.shear_rate);
+  n["hydrodynamics"]["model"] = c.hydrodynamics;
+  n["contact"]["law"] = c.contact_law;
+  n["contact"]["k_hat"] = number_node(k_hat_from_stiffness(c.simulation.contact.kn));
+  YAML::Node r = n["run"];
+  r["strain"] = number_node(c.run.strain);
+  r["average_from"] = number_node(c.run.average_from);
+  r["seed"] = c.run.seed;
+  r["threads"] = c.run.threads;
+  r["max_overlap"] = number_node(c.simulation.max_overlap);
+  r["skin"] = number_node(c.simulation.skin);
+  const TimeStepParams& ts = c.simulation.time_step;
+  r["time_step"]["mode"] = ts.mode == TimeStepParams::Mode::fixed ? "fixed" : "adaptive";
+  r["time_step"]["fixed"] = number_node(ts.fixed);
+  r["time_step"]["max_displacement"] = number_node(ts.max_displacement);
+  r["time_step"]["max"] = number_node(ts.max);
+  r["time_step"]["stability"] = number_node(ts.stability);
+  r["output"]["series_every"] = number_node(c.run.output.series_every);
+  r["output"]["snapshot_every"] = number_node(c.run.output.snapshot_every);
+  r["output"]["checkpoint_every"] = number_node(c.run.output.checkpoint_every);
+  r["output"]["checkpoint_seconds"] = number_node(c.run.output.checkpoint_seconds);
+  return n;
+}
+
+std::string to_yaml_text(const Case& c) {
+  YAML::Emitter e;
+  e << to_yaml(c);
+  return e.c_str();
+}
+
+}  // namespace suspend::io

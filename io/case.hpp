@@ -1,0 +1,61 @@
+// A simulation case: every setting of a run, read from YAML (docs/cases.md), validated, with defaults filled in.
+// The papers' dimensionless groups are accepted as the papers give them and converted to the code's units
+// (docs/units.md) here, in one place.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "core/vec.hpp"
+#include "dem/packing.hpp"
+#include "dem/simulation.hpp"
+
+namespace suspend::io {
+
+struct ParticlesCase {
+  double phi = 0.0;
+  std::optional<long> count;  // total number; with phi it fixes the (cubic) box
+  std::vector<Species> species;
+  std::string initial = "random";  // "random" or "file"
+  std::string initial_file;        // x y z radius table, or an HDF5 run/checkpoint
+  double min_gap = 1.0e-3;         // smallest surface gap of a generated packing (a_1)
+};
+
+struct OutputCase {
+  double series_every = 0.01;     // strain between time-series rows
+  double snapshot_every = 1.0;    // strain between snapshots
+  double checkpoint_every = 1.0;  // strain between checkpoints
+  double checkpoint_seconds = 600.0;  // wall-clock seconds between checkpoints
+};
+
+struct RunCase {
+  double strain = 10.0;
+  double average_from = 2.0;  // strain at which the steady-state averaging window starts
+  long seed = 1;
+  long threads = 0;  // 0: all cores
+  OutputCase output;
+};
+
+struct Case {
+  std::string title;
+  std::string source;  // the file it was read from
+  ParticlesCase particles;
+  std::optional<Vec3> box;  // given box, else derived from count and phi
+  std::string flow = "simple_shear";
+  std::string hydrodynamics = "pairwise";
+  std::string contact_law = "soft_repulsion";
+  SimulationParams simulation;
+  RunCase run;
+};
+
+// Reads and validates a case file with `--set key=value` overrides applied first. Throws InputError.
+Case load_case(const std::string& path, const std::vector<std::string>& overrides = {});
+Case parse_case(const YAML::Node& root, const std::string& source);
+
+// The fully resolved case as YAML (every key, defaults filled in): printed by `suspend check`, stored in run.h5.
+YAML::Node to_yaml(const Case& c);
+std::string to_yaml_text(const Case& c);
+
+}  // namespace suspend::io

@@ -1,0 +1,103 @@
+#include "io/checkpoint.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/hdf5.hpp"
+
+namespace suspend::io {
+
+namespace {
+constexpr const char* format = "suspend-checkpoint-1";
+
+std::vector<double> flatten(const std::vector<Vec3>& v) {
+  std::vector<double> out(3 * v.size());
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (int a = 0; a < 3; ++a) out[3 * i + a] = v[i][a];
+  return out;
+}
+std::vector<Vec3> unflatten(const std::vector<double>& v, std::size_t n, const std::string& what) {
+  if (v.size() != 3 * n) throw InputError("checkpoint: " + what + " has the wrong size");
+  std::vector<Vec3> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    out[i] = Vec3(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+    if (!out[i].allFinite())
+      throw InputError("checkpoint: " + what + " of particle " + std::to_string(i) + " is not finite (NaN or inf)");
+  }
+  return out;
+}
+}  // namespace
+
+void write_checkpoint(const std::string& path, const Checkpoint& c) {
+  write_atomically(path, [&](const std::string& tmp) {
+    h5::File f = h5::File::create(tmp);
+    const hid_t id = f.id();
+    const Particles& p = c.state.particles;
+    const std::size_t n = p.size();
+    h5::write(id, "particles/position", flatten(p.position), {n, 3});
+    h5::write(id, "particles/velocity", flatten(p.velocity), {n, 3});
+    h5::write(id, "particles/angular_velocity", flatten(p.angular_velocity), {n, 3});
+    h5::write(id, "particles/radius", p.radius, {n});
+    h5::write(id, "particles/species", std::vector<std::int64_t>(p.species.begin(), p.species.end()), {n});
+    h5::set_attribute(id, ".", "format", std::string(format));
+    h5::set_attribute(id, ".", "fingerprint", c.fingerprint);
+    h5::set_attribute(id, ".", "rng", c.rng);
+    h5::set_attribute(id, ".", "threads", static_cast<std::int64_t>(c.threads));
+    h5::set_attribute(id, ".", "step", c.state.step);
+    h5::set_attribute(id, ".", "time", c.state.time);
+    h5::set_attribute(id, ".", "strain", c.state.strain);
+    h5::set_attribute(id, ".", "next_series", c.clock.next_series);
+    h5::set_attribute(id, ".", "next_snapshot", c.clock.next_snapshot);
+    h5::set_attribute(id, ".", "next_checkpoint", c.clock.next_checkpoint);
+    h5::set_attribute(id, ".", "series_rows", c.clock.series_rows);
+    h5::set_attribute(id, ".", "snapshots", c.clock.snapshots);
+    f.flush();
+  });
+}
+
+Checkpoint read_checkpoint(const std::string& path, const std::string& fingerprint) {
+  Checkpoint c;
+  try {
+    h5::File f = h5::File::open(path, false);
+    const hid_t id = f.id();
+    if (!h5::exists(id, "particles/position") || h5::string_attribute(id, ".", "format") != format)
+      throw InputError(path + ": not a suspend checkpoint");
+    if (h5::string_attribute(id, ".", "fingerprint") != fingerprint)
+      throw InputError(path + ": the checkpoint belongs to another case (particles, box, flow, contact, "
+                              "hydrodynamics, seed or time step differ); restart with the case it was written for");
+    c.fingerprint = fingerprint;
+    c.rng = h5::string_attribute(id, ".", "rng");
+    c.threads = static_cast<int>(h5::int_attribute(id, ".", "threads"));
+    c.state.step = h5::int_attribute(id, ".", "step");
+    c.state.time = h5::double_attribute(id, ".", "time");
+    c.state.strain = h5::double_attribute(id, ".", "strain");
+    c.clock.next_series = h5::double_attribute(id, ".", "next_series");
+    c.clock.next_snapshot = h5::double_attribute(id, ".", "next_snapshot");
+    c.clock.next_checkpoint = h5::double_attribute(id, ".", "next_checkpoint");
+    c.clock.series_rows = h5::int_attribute(id, ".", "series_rows");
+    c.clock.snapshots = h5::int_attribute(id, ".", "snapshots");
+    for (double v : {c.state.time, c.state.strain, c.clock.next_series, c.clock.next_snapshot, c.clock.next_checkpoint})
+      if (!std::isfinite(v)) throw InputError(path + ": time, strain or output clock is not finite");
+    Particles& p = c.state.particles;
+    p.radius = h5::read_doubles(id, "particles/radius");
+    const std::size_t n = p.radius.size();
+    for (std::size_t i = 0; i < n; ++i)
+      if (!(p.radius[i] > 0.0) || !std::isfinite(p.radius[i]))
+        throw InputError(path + ": radius of particle " + std::to_string(i) + " is not a positive number");
+    p.position = unflatten(h5::read_doubles(id, "particles/position"), n, "position");
+    p.velocity = unflatten(h5::read_doubles(id, "particles/velocity"), n, "velocity");
+    p.angular_velocity = unflatten(h5::read_doubles(id, "particles/angular_velocity"), n, "angular velocity");
+    const std::vector<std::int64_t> species = h5::read_ints(id, "particles/species");
+    if (species.size() != n) throw InputError(path + ": particles/species has the wrong size");
+    p.species.assign(species.begin(), species.end());
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError(path + ": corrupt or unreadable checkpoint (" + e.what() + ")");
+  }
+  return c;
+}
+
+}  // namespace suspend::io

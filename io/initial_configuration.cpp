@@ -1,0 +1,129 @@
+#include "io/initial_configuration.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "io/hdf5.hpp"
+#include "io/schema_reader.hpp"
+
+namespace suspend::io {
+
+Composition composition_of(const Case& c) {
+  Composition k;
+  const std::vector<Species>& sp = c.particles.species;
+  if (c.particles.count) {
+    k.counts = species_counts(sp, static_cast<std::size_t>(*c.particles.count));
+    k.radius = species_radii(sp, k.counts);
+    k.box = cube_for_volume_fraction(k.radius, c.particles.phi);
+  } else {
+    k.box = Box(*c.box);
+    k.counts = species_counts(sp, c.particles.phi, k.box);
+    k.radius = species_radii(sp, k.counts);
+    if (k.radius.size() < 2)
+      throw InputError("box: too small to hold two particles at particles.phi = " + exact(c.particles.phi));
+  }
+  for (std::size_t s = 0; s < k.counts.size(); ++s) k.species.insert(k.species.end(), k.counts[s], static_cast<int>(s));
+  k.phi = volume_fraction(k.radius, k.box.volume());
+  return k;
+}
+
+Particles read_particle_table(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("particles.initial.file: cannot open '" + path + "'");
+  Particles p;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.resize(hash);
+    std::istringstream s(line);
+    double x, y, z, a;
+    if (!(s >> x)) continue;  // blank or comment line
+    std::string extra;
+    if (!(s >> y >> z >> a) || (s >> extra))
+      throw InputError(path + ":" + std::to_string(number) + ": expected four numbers 'x y z radius'");
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z) || !(a > 0.0) || !std::isfinite(a))
+      throw InputError(path + ":" + std::to_string(number) + ": values must be finite and the radius > 0");
+    p.position.emplace_back(x, y, z);
+    p.radius.push_back(a);
+  }
+  if (p.radius.size() < 2) throw InputError(path + ": needs at least two particles");
+  const std::size_t n = p.radius.size();
+  p.velocity.assign(n, Vec3::Zero());
+  p.angular_velocity.assign(n, Vec3::Zero());
+  p.species.assign(n, 0);
+  return p;
+}
+
+Particles read_particles_h5(const std::string& path) {
+  try {
+    h5::File f = h5::File::open(path, false);
+    std::string group;
+    if (h5::exists(f.id(), "particles/position")) {
+      group = "particles";
+    } else {
+      for (std::size_t k = 0;; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "snapshots/%06zu", k);
+        if (!h5::exists(f.id(), name)) break;
+        group = name;
+      }
+    }
+    if (group.empty()) throw InputError(path + ": holds neither a checkpoint nor a snapshot to start from");
+    std::vector<hsize_t> shape;
+    const std::vector<double> pos = h5::read_doubles(f.id(), group + "/position", &shape);
+    Particles p;
+    p.radius = h5::read_doubles(f.id(), group + "/radius");
+    const std::size_t n = p.radius.size();
+    if (shape.size() != 2 || shape[0] != n || shape[1] != 3)
+      throw InputError(path + ": " + group + "/position does not match the radius count");
+    p.resize(n);
+    p.radius = h5::read_doubles(f.id(), group + "/radius");
+    for (std::size_t i = 0; i < n; ++i) {
+      p.position[i] = Vec3(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]);
+      if (!p.position[i].allFinite() || !(p.radius[i] > 0.0))
+        throw InputError(path + ": particle " + std::to_string(i) + " has a non-finite position or bad radius");
+    }
+    return p;
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const InputError*>(&e)) throw;
+    throw InputError(std::string("particles.initial.file: ") + e.what());
+  }
+}
+
+InitialConfiguration build_initial_configuration(const Case& c) {
+  InitialConfiguration ic;
+  if (c.particles.initial == "random") {
+    const Composition k = composition_of(c);
+    PackingParams pp;
+    pp.seed = static_cast<std::uint64_t>(c.run.seed);
+    pp.min_gap = c.particles.min_gap;
+    Packing packing = random_packing(k.radius, k.box, pp);
+    ic.particles.resize(k.radius.size());
+    ic.particles.position = std::move(packing.position);
+    ic.particles.radius = k.radius;
+    ic.particles.species = k.species;
+    ic.box = k.box;
+    ic.packing = packing.report;
+    std::ostringstream o;
+    o << "random packing of " << k.radius.size() << " particles at phi = " << packing.report.phi
+      << " (min gap " << packing.report.min_gap << " a_1, " << packing.report.wall_seconds << " s)";
+    ic.origin = o.str();
+  } else {
+    const std::string& f = c.particles.initial_file;
+    const bool h5file = f.size() > 3 && (f.ends_with(".h5") || f.ends_with(".hdf5"));
+    ic.particles = h5file ? read_particles_h5(f) : read_particle_table(f);
+    const double vol = ic.particles.volume();
+    ic.box = c.box ? Box(*c.box) : Box(Vec3::Constant(std::cbrt(vol / c.particles.phi)));
+    for (Vec3& r : ic.particles.position) ic.box.wrap(r);
+    ic.origin = "loaded " + std::to_string(ic.particles.size()) + " particles from " + f;
+  }
+  ic.phi = ic.particles.volume() / ic.box.volume();
+  if (c.particles.initial == "file" && std::abs(ic.phi - c.particles.phi) > 1e-3)
+    throw InputError("particles.phi = " + exact(c.particles.phi) + " does not match the file's particles in this box (phi = " +
+                     exact(ic.phi) + "); set particles.phi to the file's value or give the matching box");
+  return ic;
+}
+
+}  // namespace suspend::io

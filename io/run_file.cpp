@@ -1,0 +1,141 @@
+#include "io/run_file.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/version.hpp"
+
+namespace suspend::io {
+
+namespace {
+const std::array<const char*, 11> scalar_columns = {"step", "time",   "strain", "shear_rate", "dt", "contacts",
+                                                    "max_overlap", "eta_r", "N1", "N2",  "Pi"};
+std::array<double, 6> components_of(const Mat3& m) {
+  return {m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(0, 2), m(1, 2)};
+}
+}  // namespace
+
+std::string snapshot_group(std::size_t index) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "snapshots/%06zu", index);
+  return buf;
+}
+
+void RunFile::open_tables(bool create) {
+  tables_.clear();
+  auto table = [&](const std::string& name, hsize_t width) {
+    tables_.emplace(name, create ? h5::Table::create(file_.id(), "series/" + name, width)
+                                 : h5::Table::open(file_.id(), "series/" + name));
+  };
+  for (const char* c : scalar_columns) table(c, 1);
+  table("stress/total", 6);
+  for (auto name : contribution_names) table("stress/" + std::string(name), 6);
+}
+
+RunFile RunFile::create(const std::string& path, const RunAttributes& attributes) {
+  RunFile r;
+  r.file_ = h5::File::create(path);
+  h5::set_attribute(r.file_.id(), ".", "case", attributes.case_yaml);
+  h5::set_attribute(r.file_.id(), ".", "version", std::string(suspend::version));
+  h5::set_attribute(r.file_.id(), ".", "git_commit", std::string(suspend::git_commit));
+  h5::set_attribute(r.file_.id(), ".", "threads", static_cast<std::int64_t>(attributes.threads));
+  h5::create_groups(r.file_.id(), "series/stress");
+  std::string comps;
+  for (const char* c : tensor_components) {
+    if (!comps.empty()) comps += ' ';
+    comps += c;
+  }
+  h5::set_attribute(r.file_.id(), "series/stress", "components", comps);
+  h5::set_attribute(r.file_.id(), "series/stress", "units", std::string("eta_0 gammadot_ref"));
+  h5::create_groups(r.file_.id(), "snapshots");
+  r.open_tables(true);
+  return r;
+}
+
+RunFile RunFile::reopen(const std::string& path, std::size_t series_rows, std::size_t snapshots) {
+  RunFile r;
+  r.file_ = h5::File::open(path, true);
+  r.open_tables(false);
+  for (auto& [name, t] : r.tables_) {
+    if (t.rows() < series_rows)
+      throw std::runtime_error(path + ": series/" + name + " has fewer rows than the checkpoint expects");
+    t.truncate(series_rows);
+  }
+  // Snapshots written after the checkpoint belong to the lost part of the run.
+  for (std::size_t k = snapshots;; ++k) {
+    const std::string g = snapshot_group(k);
+    if (!h5::exists(r.file_.id(), g)) break;
+    H5Ldelete(r.file_.id(), g.c_str(), H5P_DEFAULT);
+  }
+  for (std::size_t k = 0; k < snapshots; ++k)
+    if (!h5::exists(r.file_.id(), snapshot_group(k)))
+      throw std::runtime_error(path + ": snapshot " + std::to_string(k) + " that the checkpoint expects is missing");
+  r.snapshots_ = snapshots;
+  return r;
+}
+
+std::size_t RunFile::series_rows() const { return tables_.empty() ? 0 : tables_.begin()->second.rows(); }
+
+void RunFile::append(const SeriesRow& row) {
+  const Mat3 total = row.stress.total();
+  const Rheology rh = rheology_of(total);
+  const double rate = row.shear_rate;
+  const std::map<std::string, double> scalars = {
+      {"step", static_cast<double>(row.step)}, {"time", row.time}, {"strain", row.strain},
+      {"shear_rate", rate}, {"dt", row.dt}, {"contacts", row.contacts}, {"max_overlap", row.max_overlap},
+      {"eta_r", rh.shear / rate}, {"N1", rh.n1}, {"N2", rh.n2}, {"Pi", rh.pressure}};
+  for (const auto& [name, v] : scalars) tables_.at(name).append(&v);
+  tables_.at("stress/total").append(components_of(total).data());
+  for (std::size_t c = 0; c < contribution_count; ++c)
+    tables_.at("stress/" + std::string(contribution_names[c])).append(components_of(row.stress.part[c]).data());
+}
+
+void RunFile::write_snapshot(const Snapshot& s) {
+  const std::string g = snapshot_group(snapshots_);
+  h5::create_groups(file_.id(), g);
+  const Particles& p = *s.particles;
+  const std::size_t n = p.size();
+  auto vectors = [&](const std::vector<Vec3>& v) {
+    std::vector<double> out(3 * n);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int a = 0; a < 3; ++a) out[3 * i + a] = v[i][a];
+    return out;
+  };
+  h5::write(file_.id(), g + "/position", vectors(p.position), {n, 3});
+  h5::write(file_.id(), g + "/velocity", vectors(p.velocity), {n, 3});
+  h5::write(file_.id(), g + "/angular_velocity", vectors(p.angular_velocity), {n, 3});
+  h5::write(file_.id(), g + "/radius", p.radius, {n});
+  h5::write(file_.id(), g + "/species", std::vector<std::int64_t>(p.species.begin(), p.species.end()), {n});
+  const std::size_t m = s.contact_pairs.size() / 2;
+  h5::write(file_.id(), g + "/contact_pairs", s.contact_pairs, {m, 2});
+  h5::write(file_.id(), g + "/contact_force", s.contact_force, {m, 3});
+  h5::set_attribute(file_.id(), g, "step", s.step);
+  h5::set_attribute(file_.id(), g, "time", s.time);
+  h5::set_attribute(file_.id(), g, "strain", s.strain);
+  h5::set_attribute(file_.id(), g, "shear_offset", s.box.shear_offset());
+  h5::write(file_.id(), g + "/box", std::vector<double>{s.box.length().x(), s.box.length().y(), s.box.length().z()},
+            {3});
+  ++snapshots_;
+}
+
+std::vector<SnapshotInfo> RunFile::snapshots() const {
+  std::vector<SnapshotInfo> out;
+  for (std::size_t k = 0; k < snapshots_; ++k) {
+    const std::string g = snapshot_group(k);
+    out.push_back({g, h5::double_attribute(file_.id(), g, "time"), h5::double_attribute(file_.id(), g, "strain"),
+                   static_cast<std::size_t>(h5::shape_of(file_.id(), g + "/radius")[0]),
+                   static_cast<std::size_t>(h5::shape_of(file_.id(), g + "/contact_pairs")[0])});
+  }
+  return out;
+}
+
+std::vector<double> read_series(hid_t file, const std::string& name, int component) {
+  std::vector<hsize_t> shape;
+  std::vector<double> all = h5::read_doubles(file, "series/" + name, &shape);
+  if (component < 0) return all;
+  std::vector<double> out(shape[0]);
+  for (hsize_t r = 0; r < shape[0]; ++r) out[r] = all[r * shape[1] + component];
+  return out;
+}
+
+}  // namespace suspend::io

@@ -1,0 +1,219 @@
+#include "io/runner.hpp"
+
+#include <omp.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "core/rng.hpp"
+#include "io/atomic_file.hpp"
+#include "io/checkpoint.hpp"
+#include "io/initial_configuration.hpp"
+#include "io/progress.hpp"
+#include "io/run_file.hpp"
+#include "io/schema_reader.hpp"
+#include "io/summary.hpp"
+#include "io/xdmf.hpp"
+
+namespace suspend::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::atomic<int> stop_signal{0};
+extern "C" void on_stop_signal(int sig) { stop_signal.store(sig); }
+
+std::string join(const fs::path& dir, const char* name) { return (dir / name).string(); }
+
+// First multiple of `every` strictly above `strain`.
+double next_multiple(double strain, double every) { return (std::floor(strain / every + 1e-9) + 1.0) * every; }
+
+Snapshot snapshot_of(const PairwiseSimulation& sim) {
+  Snapshot s;
+  const SimulationState& st = sim.state();
+  s.step = st.step;
+  s.time = st.time;
+  s.strain = st.strain;
+  s.box = sim.box();
+  s.particles = &st.particles;
+  const std::vector<Vec3> f = sim.pair_forces();
+  const auto& pairs = sim.active_pairs();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    s.contact_pairs.push_back(pairs[k].i);
+    s.contact_pairs.push_back(pairs[k].j);
+    for (int a = 0; a < 3; ++a) s.contact_force.push_back(f[k][a]);
+  }
+  return s;
+}
+}  // namespace
+
+void install_stop_handlers() {
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+}
+
+std::string physics_fingerprint(const Case& c) {
+  YAML::Node n = to_yaml(c);
+  n["run"].remove("strain");
+  n["run"].remove("average_from");
+  n["run"].remove("threads");
+  n["run"].remove("output");
+  n.remove("title");
+  YAML::Emitter e;
+  e << n;
+  return e.c_str();
+}
+
+int run_case(const Case& c, const RunOptions& o) {
+  const int threads = o.threads > 0 ? o.threads : (c.run.threads > 0 ? static_cast<int>(c.run.threads)
+                                                                      : omp_get_num_procs());
+  omp_set_num_threads(threads);
+  const std::string fingerprint = physics_fingerprint(c);
+  const OutputCase& every = c.run.output;
+
+  // Everything that can fail on input happens before the output directory is touched.
+  const bool restarting = !o.restart.empty();
+  fs::path dir = o.out_dir.empty() && restarting ? fs::path(o.restart).parent_path() : fs::path(o.out_dir);
+  if (dir.empty()) throw InputError("--out: missing; give the directory to write the run to");
+  SimulationState state;
+  Box box;
+  OutputClock clock;
+  Rng rng(static_cast<std::uint64_t>(c.run.seed));
+  std::string origin;
+  const Composition composition = composition_of(c);
+  if (restarting) {
+    if (!fs::is_regular_file(o.restart)) throw InputError("--restart: '" + o.restart + "' does not exist");
+    Checkpoint cp = read_checkpoint(o.restart, fingerprint);
+    if (!fs::is_regular_file(dir / "run.h5"))
+      throw InputError("--restart: " + join(dir, "run.h5") + " is missing; the checkpoint continues that file");
+    state = std::move(cp.state);
+    clock = cp.clock;
+    rng = deserialize_rng(cp.rng);
+    box = c.particles.initial == "random" ? composition.box : build_initial_configuration(c).box;
+    if (cp.threads != threads)
+      std::cerr << "warning: the checkpoint was written with " << cp.threads << " threads and this run uses "
+                << threads << "; the continuation is exact only on the same thread count\n";
+    std::ostringstream s;
+    s << "restarting from " << o.restart << " at strain " << state.strain << " (step " << state.step << ")";
+    origin = s.str();
+  } else {
+    if (fs::exists(dir / "run.h5"))
+      throw InputError("--out: " + dir.string() + " already holds a run; continue it with --restart " +
+                       join(dir, "checkpoint.h5") + " or choose another directory");
+    InitialConfiguration ic = build_initial_configuration(c);
+    state.particles = std::move(ic.particles);
+    box = ic.box;
+    origin = ic.origin;
+    clock.next_series = 0.0;
+    clock.next_snapshot = 0.0;
+    clock.next_checkpoint = every.checkpoint_every;
+  }
+  if (state.strain >= c.run.strain)
+    throw InputError("run.strain = " + exact(c.run.strain) + " is already reached by the checkpoint (strain " +
+                     exact(state.strain) + "); raise it with --set run.strain=...");
+  PairwiseSimulation sim(std::move(state), box, c.simulation);
+
+  fs::create_directories(dir);
+  const std::string run_path = join(dir, "run.h5"), checkpoint_path = join(dir, "checkpoint.h5");
+  RunFile file = restarting ? RunFile::reopen(run_path, clock.series_rows, clock.snapshots)
+                            : RunFile::create(run_path, {to_yaml_text(c), threads});
+  Progress progress(Progress::detect(o.quiet), c.run.strain, sim.state().strain);
+  progress.message(origin);
+  progress.message("writing " + dir.string() + "/{run.h5, run.xdmf, summary.json, checkpoint.h5} on " +
+                   std::to_string(threads) + " thread(s)");
+
+  auto save = [&] {
+    file.flush();
+    clock.series_rows = static_cast<std::int64_t>(file.series_rows());
+    clock.snapshots = static_cast<std::int64_t>(file.snapshot_count());
+    write_checkpoint(checkpoint_path, {sim.state(), clock, fingerprint, serialize(rng), threads});
+  };
+  auto finish_outputs = [&] {
+    file.flush();
+    write_text_atomically(join(dir, "run.xdmf"), xdmf_text("run.h5", file.snapshots()));
+  };
+
+  auto wall0 = std::chrono::steady_clock::now();
+  install_stop_handlers();
+  double eta_sum = 0.0;
+  long eta_count = 0;
+  try {
+    for (;;) {
+      sim.evaluate();
+      const double strain = sim.state().strain;
+      const double eps = 1e-9;
+      if (strain >= clock.next_series - eps) {
+        SeriesRow row;
+        row.step = sim.state().step;
+        row.time = sim.state().time;
+        row.strain = strain;
+        row.shear_rate = sim.shear_rate();
+        row.dt = sim.time_step();
+        row.contacts = static_cast<double>(sim.contact_count());
+        row.max_overlap = sim.max_overlap();
+        row.stress = sim.stress();
+        file.append(row);
+        clock.next_series = next_multiple(strain, every.series_every);
+        if (strain >= c.run.average_from) {
+          eta_sum += row.stress.total()(0, 1) / row.shear_rate;
+          ++eta_count;
+        }
+      }
+      if (strain >= clock.next_snapshot - eps) {
+        file.write_snapshot(snapshot_of(sim));
+        clock.next_snapshot = next_multiple(strain, every.snapshot_every);
+      }
+      progress.update(strain, sim.state().step,
+                      eta_count ? eta_sum / eta_count : sim.stress().total()(0, 1) / sim.shear_rate());
+      if (strain >= c.run.strain - eps) break;
+
+      sim.advance();
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+      if (const int sig = stop_signal.load()) {
+        save();
+        finish_outputs();
+        progress.finish();
+        std::cerr << "stopped by signal " << sig << " at strain " << sim.state().strain << "; continue with: suspend run "
+                  << c.source << " --restart " << checkpoint_path << "\n";
+        return 128 + sig;
+      }
+      if (sim.state().strain >= clock.next_checkpoint - eps || wall >= every.checkpoint_seconds) {
+        clock.next_checkpoint = next_multiple(sim.state().strain, every.checkpoint_every);
+        save();
+        wall0 = std::chrono::steady_clock::now();
+      }
+    }
+  } catch (const NumericalError& e) {
+    progress.finish();
+    file.write_snapshot(snapshot_of(sim));
+    save();
+    finish_outputs();
+    std::cerr << "error: " << e.what() << "\nthe last good state is in " << checkpoint_path << " and snapshot "
+              << file.snapshot_count() - 1 << " of " << run_path << "\n";
+    return exit_numerical_error;
+  }
+  progress.finish();
+  save();
+  finish_outputs();
+  const nlohmann::json summary =
+      summarize(file.id(), {sim.state().particles.volume() / sim.box().volume(), sim.state().particles.size(),
+                            c.run.average_from});
+  write_text_atomically(join(dir, "summary.json"), summary.dump(2) + "\n");
+  file.close();
+  const auto& eta = summary["eta_r"];
+  std::printf("eta_r = %.5g +- %.2g   N1 = %.4g +- %.2g   N2 = %.4g +- %.2g   Pi = %.4g +- %.2g   (strain %.3g-%.3g, %zu samples)\n",
+              eta["mean"].get<double>(), eta["sem"].get<double>(), summary["N1"]["mean"].get<double>(),
+              summary["N1"]["sem"].get<double>(), summary["N2"]["mean"].get<double>(),
+              summary["N2"]["sem"].get<double>(), summary["Pi"]["mean"].get<double>(),
+              summary["Pi"]["sem"].get<double>(), c.run.average_from, sim.state().strain,
+              summary["samples"].get<std::size_t>());
+  return 0;
+}
+
+}  // namespace suspend::io

@@ -1,0 +1,222 @@
+#include "io/schema_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace suspend::io {
+
+namespace {
+std::string join_words(const std::vector<std::string>& words) {
+  std::string list;
+  for (const auto& w : words) {
+    if (!list.empty()) list += ", ";
+    list += w;
+  }
+  return list;
+}
+std::string suggestion(const std::string& guess) {
+  return guess.empty() ? std::string() : "; did you mean '" + guess + "'?";
+}
+}  // namespace
+
+std::string exact(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  // Prefer the shortest representation that round-trips.
+  for (int prec = 1; prec <= 17; ++prec) {
+    char shorter[64];
+    std::snprintf(shorter, sizeof shorter, "%.*g", prec, v);
+    if (std::strtod(shorter, nullptr) == v) return shorter;
+  }
+  return buf;
+}
+
+bool Range::contains(double v) const {
+  if (!std::isfinite(v)) return false;
+  const bool above = lo_open ? v > lo : v >= lo;
+  const bool below = hi_open ? v < hi : v <= hi;
+  return above && below;
+}
+
+std::string Range::describe() const {
+  const bool lo_inf = std::isinf(lo), hi_inf = std::isinf(hi);
+  if (lo_inf && hi_inf) return "a finite number";
+  if (hi_inf) return std::string(lo_open ? "> " : ">= ") + exact(lo);
+  if (lo_inf) return std::string(hi_open ? "< " : "<= ") + exact(hi);
+  return std::string("in ") + (lo_open ? "(" : "[") + exact(lo) + ", " + exact(hi) + (hi_open ? ")" : "]");
+}
+
+SchemaReader::SchemaReader(YAML::Node node, std::string path) : node_(std::move(node)), path_(std::move(path)) {
+  if (node_ && !node_.IsNull() && !node_.IsMap())
+    throw InputError((path_.empty() ? std::string("case") : path_) + ": expected a mapping of keys to values");
+}
+
+void SchemaReader::fail(const std::string& key, const std::string& what) const {
+  throw InputError(key_path(key) + ": " + what);
+}
+
+bool SchemaReader::has(const std::string& key) {
+  asked_.insert(key);
+  return node_ && node_.IsMap() && node_[key] && !node_[key].IsNull();
+}
+
+YAML::Node SchemaReader::scalar(const std::string& key) {
+  YAML::Node v = node_[key];
+  if (!v.IsScalar()) fail(key, "expected a single value, got a " + std::string(v.IsMap() ? "mapping" : "list"));
+  return v;
+}
+
+std::optional<double> SchemaReader::optional_number(const std::string& key, Range range) {
+  if (!has(key)) return std::nullopt;
+  const YAML::Node v = scalar(key);
+  double x = 0.0;
+  try {
+    x = v.as<double>();
+  } catch (const YAML::Exception&) {
+    fail(key, "'" + v.Scalar() + "' is not a number (expected " + range.describe() + ")");
+  }
+  if (!range.contains(x)) fail(key, exact(x) + " is out of range: must be " + range.describe());
+  return x;
+}
+
+double SchemaReader::number(const std::string& key, double fallback, Range range) {
+  return optional_number(key, range).value_or(fallback);
+}
+
+double SchemaReader::number(const std::string& key, Range range) {
+  if (!has(key)) fail(key, "missing; a number " + range.describe() + " is required");
+  return *optional_number(key, range);
+}
+
+std::optional<long> SchemaReader::optional_integer(const std::string& key, long lo, long hi) {
+  if (!has(key)) return std::nullopt;
+  const YAML::Node v = scalar(key);
+  long x = 0;
+  try {
+    x = v.as<long>();
+  } catch (const YAML::Exception&) {
+    fail(key, "'" + v.Scalar() + "' is not an integer (expected " + std::to_string(lo) + " .. " +
+                  std::to_string(hi) + ")");
+  }
+  if (x < lo || x > hi)
+    fail(key, std::to_string(x) + " is out of range: must be in " + std::to_string(lo) + " .. " + std::to_string(hi));
+  return x;
+}
+
+long SchemaReader::integer(const std::string& key, long fallback, long lo, long hi) {
+  return optional_integer(key, lo, hi).value_or(fallback);
+}
+
+bool SchemaReader::boolean(const std::string& key, bool fallback) {
+  if (!has(key)) return fallback;
+  const YAML::Node v = scalar(key);
+  try {
+    return v.as<bool>();
+  } catch (const YAML::Exception&) {
+    fail(key, "'" + v.Scalar() + "' is not a boolean (expected true or false)");
+  }
+}
+
+std::optional<std::string> SchemaReader::optional_text(const std::string& key) {
+  if (!has(key)) return std::nullopt;
+  return scalar(key).Scalar();
+}
+
+std::string SchemaReader::text(const std::string& key, const std::string& fallback) {
+  return optional_text(key).value_or(fallback);
+}
+
+std::string SchemaReader::choice(const std::string& key, const std::string& fallback,
+                                 const std::vector<std::string>& allowed) {
+  const std::string v = text(key, fallback);
+  if (std::find(allowed.begin(), allowed.end(), v) != allowed.end()) return v;
+  const std::string guess = closest_word(v, allowed);
+  fail(key, "'" + v + "' is not allowed (one of: " + join_words(allowed) + ")" + suggestion(guess));
+}
+
+SchemaReader SchemaReader::child(const std::string& key) {
+  asked_.insert(key);
+  YAML::Node v = (node_ && node_.IsMap()) ? node_[key] : YAML::Node();
+  if (v && !v.IsNull() && !v.IsMap()) fail(key, "expected a mapping of keys to values");
+  return SchemaReader(v, key_path(key));
+}
+
+std::vector<SchemaReader> SchemaReader::children(const std::string& key) {
+  std::vector<SchemaReader> out;
+  if (!has(key)) return out;
+  const YAML::Node v = node_[key];
+  if (!v.IsSequence()) fail(key, "expected a list");
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    if (!v[k].IsMap()) fail(key, "entry " + std::to_string(k) + " must be a mapping of keys to values");
+    out.emplace_back(v[k], key_path(key) + "[" + std::to_string(k) + "]");
+  }
+  return out;
+}
+
+void SchemaReader::finish() const {
+  if (!node_ || !node_.IsMap()) return;
+  std::vector<std::string> allowed(asked_.begin(), asked_.end());
+  for (const auto& kv : node_) {
+    const std::string key = kv.first.as<std::string>();
+    if (asked_.count(key)) continue;
+    throw InputError(key_path(key) + ": unknown key" + suggestion(closest_word(key, allowed)) +
+                     " (allowed here: " + join_words(allowed) + ")");
+  }
+}
+
+std::string closest_word(const std::string& word, const std::vector<std::string>& candidates) {
+  auto distance = [](const std::string& a, const std::string& b) {
+    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+      cur[0] = i;
+      for (std::size_t j = 1; j <= b.size(); ++j)
+        cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      std::swap(prev, cur);
+    }
+    return prev[b.size()];
+  };
+  std::string best;
+  std::size_t best_d = std::max<std::size_t>(2, word.size() / 3) + 1;
+  for (const auto& c : candidates) {
+    const std::size_t d = distance(word, c);
+    if (d < best_d) best_d = d, best = c;
+  }
+  return best;
+}
+
+void apply_override(YAML::Node& root, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set " + assignment + ": expected KEY=VALUE, e.g. --set particles.phi=0.52");
+  const std::string path = assignment.substr(0, eq);
+  const std::string value = assignment.substr(eq + 1);
+  std::vector<std::string> keys;
+  std::stringstream ss(path);
+  for (std::string k; std::getline(ss, k, '.');) {
+    if (k.empty()) throw InputError("--set " + assignment + ": empty key in '" + path + "'");
+    keys.push_back(k);
+  }
+  YAML::Node parsed;
+  try {
+    parsed = YAML::Load(value);
+  } catch (const YAML::Exception& e) {
+    throw InputError("--set " + path + ": cannot parse value '" + value + "' (" + e.msg + ")");
+  }
+  // yaml-cpp nodes are references: walk by building the chain of nodes explicitly.
+  if (root.IsScalar() || root.IsSequence()) throw InputError("case file: expected a mapping of sections");
+  std::vector<YAML::Node> chain{root};
+  for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
+    YAML::Node cur = chain.back();
+    YAML::Node next = cur[keys[k]];
+    if (next.IsScalar() || next.IsSequence())
+      throw InputError("--set " + path + ": '" + keys[k] + "' holds a value, not a mapping");
+    chain.push_back(next);
+  }
+  YAML::Node parent = chain.back();
+  parent[keys.back()] = parsed;
+}
+
+}  // namespace suspend::io

@@ -1,0 +1,77 @@
+// Reading a YAML case with validation: every value is read through a SchemaReader that knows its dotted key path,
+// so every error names the key, the value and what is allowed, in one line. Keys that nothing asked for are
+// reported as unknown, with a "did you mean" suggestion among the keys that are allowed at that place.
+#pragma once
+#include <yaml-cpp/yaml.h>
+
+#include <limits>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace suspend::io {
+
+// An allowed interval for a number; open or closed at each end.
+struct Range {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false, hi_open = false;
+  static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
+  static Range non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false, false}; }
+  static Range closed(double a, double b) { return {a, b, false, false}; }
+  static Range open_closed(double a, double b) { return {a, b, true, false}; }
+  static Range open(double a, double b) { return {a, b, true, true}; }
+  bool contains(double v) const;
+  std::string describe() const;
+};
+
+class SchemaReader {
+ public:
+  SchemaReader(YAML::Node node, std::string path);
+
+  const std::string& path() const { return path_; }
+  std::string key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  bool has(const std::string& key);
+
+  double number(const std::string& key, double fallback, Range range = {});
+  double number(const std::string& key, Range range);  // required
+  std::optional<double> optional_number(const std::string& key, Range range = {});
+  long integer(const std::string& key, long fallback, long lo, long hi);
+  std::optional<long> optional_integer(const std::string& key, long lo, long hi);
+  bool boolean(const std::string& key, bool fallback);
+  std::string text(const std::string& key, const std::string& fallback);
+  std::optional<std::string> optional_text(const std::string& key);
+  // One of a fixed set of words.
+  std::string choice(const std::string& key, const std::string& fallback, const std::vector<std::string>& allowed);
+
+  // A nested mapping (absent -> an empty mapping, so every key inside takes its default).
+  SchemaReader child(const std::string& key);
+  // A sequence of mappings.
+  std::vector<SchemaReader> children(const std::string& key);
+
+  // Throws for any key in this mapping that was never asked for. Call after reading every key.
+  void finish() const;
+
+  // Raises an InputError about one key of this mapping.
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+
+ private:
+  YAML::Node scalar(const std::string& key);
+  YAML::Node node_;
+  std::string path_;
+  std::set<std::string> asked_;
+};
+
+// Applies `--set a.b.c=VALUE` (VALUE parsed as YAML) to a case tree, creating mappings as needed.
+void apply_override(YAML::Node& root, const std::string& assignment);
+
+// The closest word to `word` among `candidates` (edit distance), or "" if none is close.
+std::string closest_word(const std::string& word, const std::vector<std::string>& candidates);
+
+// A double printed so that it reads back to the same bits.
+std::string exact(double v);
+
+}  // namespace suspend::io

@@ -1,0 +1,19 @@
+// DIR/summary.json: steady-state means and standard errors of every observable (eta_r, N1, N2, Pi, total and per
+// contribution) over the averaging window, read back from run.h5 so that restarted runs summarise the whole run.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "io/hdf5.hpp"
+
+namespace suspend::io {
+
+struct SummaryContext {
+  double phi = 0.0;
+  std::size_t particles = 0;
+  double average_from = 0.0;
+};
+
+nlohmann::json summarize(hid_t run_file, const SummaryContext& context);
+
+}  // namespace suspend::io

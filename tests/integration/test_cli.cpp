@@ -1,0 +1,180 @@
+// The `suspend` program as users run it: bad input exits with code 2 and one line, writing nothing; a run killed
+// with SIGKILL and restarted from its checkpoint ends bit for bit where an unbroken run ends; SIGINT checkpoints
+// and stops cleanly.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fcntl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "io/hdf5.hpp"
+#include "io/run_file.hpp"
+
+extern char** environ;
+namespace fs = std::filesystem;
+using namespace suspend::io;
+
+namespace {
+const std::string suspend_bin = SUSPEND_BINARY_DIR "/bin/suspend";
+const std::string restart_case = SUSPEND_SOURCE_DIR "/tests/data/restart_case.yaml";
+
+pid_t spawn(std::vector<std::string> args, const std::string& err_file) {
+  args.insert(args.begin(), suspend_bin);
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  EXPECT_EQ(posix_spawn(&pid, suspend_bin.c_str(), &fa, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&fa);
+  return pid;
+}
+int wait_exit(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+struct Result {
+  int code;
+  std::string err;
+};
+Result run(const std::vector<std::string>& args) {
+  const std::string err_file = ::testing::TempDir() + "/suspend_stderr.txt";
+  const int code = wait_exit(spawn(args, err_file));
+  std::ifstream in(err_file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return {code, s.str()};
+}
+std::string fresh_dir(const std::string& name) {
+  const std::string d = ::testing::TempDir() + "/" + name;
+  fs::remove_all(d);
+  return d;
+}
+std::string write_case(const std::string& name, const std::string& text) {
+  const std::string p = ::testing::TempDir() + "/" + name;
+  std::ofstream(p) << text;
+  return p;
+}
+void expect_input_error(const std::vector<std::string>& args, const std::string& fragment, const std::string& out) {
+  const Result r = run(args);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+  EXPECT_NE(r.err.find(fragment), std::string::npos) << r.err;
+  if (!out.empty()) {
+    EXPECT_FALSE(fs::exists(out)) << "nothing may be written to --out on bad input";
+  }
+}
+}  // namespace
+
+TEST(Cli, VersionAndHelp) {
+  const Result v = run({"--version"});
+  EXPECT_EQ(v.code, 0);
+  EXPECT_EQ(run({"run", "--help"}).code, 0);
+  EXPECT_EQ(run({"check", "--help"}).code, 0);
+}
+
+TEST(Cli, BadInputExitsWithTwoAndWritesNothing) {
+  const std::string out = fresh_dir("bad_out");
+  expect_input_error({"run", restart_case, "--out", out, "--set", "particles.phii=0.3"},
+                     "particles.phii: unknown key; did you mean 'phi'?", out);
+  expect_input_error({"run", restart_case, "--out", out, "--set", "particles.phi=lots"},
+                     "particles.phi: 'lots' is not a number", out);
+  expect_input_error({"run", restart_case, "--out", out, "--set", "particles.phi=0.8"}, "out of range", out);
+  expect_input_error({"run", restart_case, "--out", out, "--set", "particles.phi=0.72"}, "unreachable", out);
+  expect_input_error({"run", restart_case, "--out", out, "--set", "particles.bidisperse.size_ratio=-1.4"},
+                     "particles.bidisperse.size_ratio: -1.4 is out of range", out);
+  expect_input_error({"run", "/nonexistent/case.yaml", "--out", out}, "case file not found", out);
+  expect_input_error({"run", restart_case, "--out", out, "--restart", "/nonexistent/checkpoint.h5"},
+                     "--restart", "");
+  expect_input_error({"check", write_case("broken.yaml", "particles: [1, 2\n")}, "not valid YAML", "");
+  expect_input_error({"run", restart_case, "--out", out, "--threads", "0"}, "threads", out);
+}
+
+TEST(Cli, CheckPrintsTheResolvedCaseWithDerivedValues) {
+  const Result r = run({"check", restart_case});
+  EXPECT_EQ(r.code, 0) << r.err;
+}
+
+TEST(Cli, KilledAndRestartedRunEndsBitIdentical) {
+  const std::string a = fresh_dir("restart_a"), b = fresh_dir("restart_b");
+  ASSERT_EQ(run({"run", restart_case, "--out", a, "--threads", "2", "--quiet"}).code, 0);
+
+  // Run B is killed with SIGKILL as soon as its second checkpoint exists, mid-run.
+  const pid_t pid = spawn({"run", restart_case, "--out", b, "--threads", "2", "--quiet"}, b + ".err");
+  const auto t0 = std::chrono::steady_clock::now();
+  bool killed = false;
+  while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(60)) {
+    if (fs::exists(b + "/checkpoint.h5")) {
+      try {
+        suspend::io::h5::File f = suspend::io::h5::File::open(b + "/checkpoint.h5", false);
+        if (suspend::io::h5::double_attribute(f.id(), ".", "strain") >= 0.2) {
+          kill(pid, SIGKILL);
+          killed = true;
+          break;
+        }
+      } catch (const std::exception&) {
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  const int code = wait_exit(pid);
+  ASSERT_TRUE(killed);
+  ASSERT_EQ(code, 128 + SIGKILL) << "the run finished before it could be killed: make the case longer";
+  EXPECT_FALSE(fs::exists(b + "/summary.json"));
+
+  const Result r = run({"run", restart_case, "--restart", b + "/checkpoint.h5", "--threads", "2", "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+
+  h5::File fa = h5::File::open(a + "/checkpoint.h5", false), fb = h5::File::open(b + "/checkpoint.h5", false);
+  for (const char* d : {"particles/position", "particles/velocity", "particles/angular_velocity"})
+    EXPECT_EQ(h5::read_doubles(fa.id(), d), h5::read_doubles(fb.id(), d)) << d;
+  EXPECT_EQ(h5::int_attribute(fa.id(), ".", "step"), h5::int_attribute(fb.id(), ".", "step"));
+  h5::File ra = h5::File::open(a + "/run.h5", false), rb = h5::File::open(b + "/run.h5", false);
+  for (const char* s : {"strain", "eta_r", "Pi", "stress/contact_normal"})
+    EXPECT_EQ(read_series(ra.id(), s), read_series(rb.id(), s)) << s;
+  std::ifstream sa(a + "/summary.json"), sb(b + "/summary.json");
+  std::stringstream ta, tb;
+  ta << sa.rdbuf();
+  tb << sb.rdbuf();
+  EXPECT_EQ(ta.str(), tb.str());
+}
+
+TEST(Cli, InterruptWritesACheckpointAndStopsCleanly) {
+  const std::string c = fresh_dir("interrupt");
+  const pid_t pid = spawn({"run", restart_case, "--out", c, "--threads", "1", "--quiet"}, c + ".err");
+  const auto t0 = std::chrono::steady_clock::now();
+  while (!fs::exists(c + "/checkpoint.h5") && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(60))
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(pid, SIGINT);
+  const int code = wait_exit(pid);
+  ASSERT_EQ(code, 128 + SIGINT) << "the run must stop on SIGINT with 130";
+  std::ifstream err(c + ".err");
+  std::stringstream s;
+  s << err.rdbuf();
+  EXPECT_NE(s.str().find("--restart"), std::string::npos) << s.str();
+  EXPECT_TRUE(fs::exists(c + "/run.xdmf"));
+  const Result r = run({"run", restart_case, "--restart", c + "/checkpoint.h5", "--threads", "1", "--quiet"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(c + "/summary.json"));
+}
+
+TEST(Cli, RestartFromAnotherCaseIsRefused) {
+  const std::string c = fresh_dir("other_case");
+  ASSERT_EQ(run({"run", restart_case, "--out", c, "--quiet", "--set", "run.strain=0.05", "--set", "run.average_from=0"}).code, 0);
+  expect_input_error({"run", restart_case, "--restart", c + "/checkpoint.h5", "--set", "contact.k_hat=2000"},
+                     "belongs to another case", "");
+}

@@ -1,0 +1,149 @@
+// Case validation: every kind of bad input gives one clear InputError naming the key, the value and what is allowed.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "io/case.hpp"
+#include "io/initial_configuration.hpp"
+#include "io/schema_reader.hpp"
+
+using namespace suspend;
+using namespace suspend::io;
+
+namespace {
+const char* base = R"(
+particles:
+  phi: 0.4
+  count: 100
+  bidisperse: {size_ratio: 1.4, large_volume_share: 0.5}
+contact: {law: soft_repulsion, k_hat: 1000}
+run: {strain: 2}
+)";
+
+std::string error_of(const std::string& yaml, const std::vector<std::string>& overrides = {}) {
+  YAML::Node root = YAML::Load(yaml);
+  try {
+    for (const auto& o : overrides) apply_override(root, o);
+    parse_case(root, "");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(Case, ValidCaseFillsDefaults) {
+  const Case c = parse_case(YAML::Load(base), "");
+  EXPECT_DOUBLE_EQ(c.particles.phi, 0.4);
+  ASSERT_EQ(c.particles.species.size(), 2u);
+  EXPECT_DOUBLE_EQ(c.particles.species[1].radius, 1.4);
+  EXPECT_DOUBLE_EQ(c.simulation.shear_rate, 1.0);
+  EXPECT_EQ(c.hydrodynamics, "pairwise");
+  EXPECT_DOUBLE_EQ(c.run.average_from, 0.4);  // default: the first 20% of the strain is transient
+}
+
+TEST(Case, UnknownKeySuggestsTheClosestAllowedKey) {
+  const std::string e = error_of(base, {"particles.phii=0.5"});
+  EXPECT_NE(e.find("particles.phii: unknown key"), std::string::npos) << e;
+  EXPECT_NE(e.find("did you mean 'phi'"), std::string::npos) << e;
+  EXPECT_EQ(e.find('\n'), std::string::npos) << "one line";
+}
+
+TEST(Case, UnknownSectionIsReported) {
+  const std::string e = error_of(std::string(base) + "flw: {shear_rate: 2}\n");
+  EXPECT_NE(e.find("flw: unknown key; did you mean 'flow'"), std::string::npos) << e;
+}
+
+TEST(Case, WrongTypeNamesKeyValueAndExpectation) {
+  const std::string e = error_of(base, {"particles.phi=abc"});
+  EXPECT_NE(e.find("particles.phi: 'abc' is not a number"), std::string::npos) << e;
+  const std::string m = error_of(base, {"run.output=3"});
+  EXPECT_NE(m.find("run.output: expected a mapping"), std::string::npos) << m;
+}
+
+TEST(Case, OutOfRangeNamesTheAllowedInterval) {
+  const std::string e = error_of(base, {"particles.phi=0.9"});
+  EXPECT_NE(e.find("particles.phi: 0.9 is out of range: must be in (0, 0.74)"), std::string::npos) << e;
+  EXPECT_NE(error_of(base, {"contact.k_hat=-1"}).find("contact.k_hat"), std::string::npos);
+  EXPECT_NE(error_of(base, {"run.average_from=5"}).find("must be below run.strain"), std::string::npos);
+}
+
+TEST(Case, ChoiceListsAllowedWords) {
+  const std::string e = error_of(base, {"contact.law=soft_repulsio"});
+  EXPECT_NE(e.find("contact.law: 'soft_repulsio' is not allowed (one of: soft_repulsion)"), std::string::npos) << e;
+  EXPECT_NE(e.find("did you mean 'soft_repulsion'"), std::string::npos) << e;
+}
+
+TEST(Case, VolumeSharesMustSumToOneAndSmallestRadiusIsTheUnit) {
+  const std::string shares = R"(
+particles:
+  phi: 0.4
+  count: 100
+  species: [{radius: 1, volume_share: 0.5}, {radius: 2, volume_share: 0.4}]
+)";
+  EXPECT_NE(error_of(shares).find("particles.species: volume shares sum to 0.9"), std::string::npos);
+  const std::string unit = R"(
+particles:
+  phi: 0.4
+  count: 100
+  species: [{radius: 2, volume_share: 1}]
+)";
+  EXPECT_NE(error_of(unit).find("smallest radius is the length unit"), std::string::npos);
+}
+
+TEST(Case, CountAndBoxAreExclusive) {
+  EXPECT_NE(error_of(base, {"box.cube=20"}).find("particles.count and box are both given"), std::string::npos);
+  EXPECT_NE(error_of("particles: {phi: 0.3}\n").find("particles.count: missing"), std::string::npos);
+}
+
+TEST(Case, MissingInitialFileIsReported) {
+  const std::string e = error_of(base, {"particles.initial={from: file, file: /nonexistent/config.txt}"});
+  EXPECT_NE(e.find("particles.initial.file: '/nonexistent/config.txt' does not exist"), std::string::npos) << e;
+}
+
+TEST(Case, MalformedOverride) {
+  EXPECT_NE(error_of(base, {"particles.phi"}).find("expected KEY=VALUE"), std::string::npos);
+  EXPECT_NE(error_of(base, {"particles.phi.x=1"}).find("holds a value"), std::string::npos);
+}
+
+TEST(Case, OverrideCreatesNestedKeys) {
+  YAML::Node root = YAML::Load(base);
+  apply_override(root, "run.output.series_every=0.5");
+  apply_override(root, "flow.shear_rate=2");
+  const Case c = parse_case(root, "");
+  EXPECT_DOUBLE_EQ(c.run.output.series_every, 0.5);
+  EXPECT_DOUBLE_EQ(c.simulation.shear_rate, 2.0);
+}
+
+TEST(Case, ResolvedYamlReadsBackToTheSameCase) {
+  const Case c = parse_case(YAML::Load(base), "");
+  const Case d = parse_case(YAML::Load(to_yaml_text(c)), "");
+  EXPECT_EQ(to_yaml_text(c), to_yaml_text(d));
+}
+
+TEST(Case, UnreachableVolumeFractionForTheBox) {
+  // 0.72 is below the schema bound but far above random close packing: the generator must refuse it.
+  YAML::Node root = YAML::Load(base);
+  apply_override(root, "particles.phi=0.72");
+  apply_override(root, "particles.count=40");
+  const Case c = parse_case(root, "");
+  try {
+    build_initial_configuration(c);
+    FAIL() << "phi = 0.72 must be unreachable";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unreachable"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Case, ParticleTableFileErrorsNameTheLine) {
+  const std::string path = ::testing::TempDir() + "/bad_table.txt";
+  std::ofstream(path) << "# x y z a\n1 2 3 1\n4 5 six 1\n";
+  try {
+    read_particle_table(path);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad_table.txt:3"), std::string::npos) << e.what();
+  }
+}

@@ -1,0 +1,174 @@
+// run.h5 round trip, truncation on restart, checkpoint round trip and refusal, and the XDMF references.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "core/error.hpp"
+#include "io/checkpoint.hpp"
+#include "io/run_file.hpp"
+#include "io/xdmf.hpp"
+
+using namespace suspend;
+using namespace suspend::io;
+
+namespace {
+Particles some_particles(std::size_t n) {
+  Particles p;
+  p.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    p.position[i] = Vec3(0.1 * i, 0.2 * i + 1.0 / 3.0, std::sqrt(2.0) * i);
+    p.velocity[i] = Vec3(1e-300 * i, -1.0 * i, 3.0);
+    p.angular_velocity[i] = Vec3(0.0, 0.0, -0.5 + i);
+    p.radius[i] = i % 2 ? 1.4 : 1.0;
+    p.species[i] = static_cast<int>(i % 2);
+  }
+  return p;
+}
+SeriesRow row(int k) {
+  SeriesRow r;
+  r.step = 10 * k;
+  r.time = 0.1 * k;
+  r.strain = 0.1 * k;
+  r.shear_rate = 2.0;
+  r.dt = 1e-3;
+  r.stress[Contribution::hydrodynamic](0, 1) = 2.0 + k;
+  r.stress[Contribution::contact_normal](1, 1) = -3.0 * k;
+  return r;
+}
+std::string temp(const std::string& name) {
+  const std::string p = ::testing::TempDir() + "/" + name;
+  std::filesystem::remove(p);
+  return p;
+}
+}  // namespace
+
+TEST(RunFile, SeriesAndSnapshotsRoundTrip) {
+  const std::string path = temp("roundtrip.h5");
+  const Particles p = some_particles(7);
+  {
+    RunFile f = RunFile::create(path, {"title: x\n", 2});
+    for (int k = 0; k < 5; ++k) f.append(row(k));
+    Snapshot s;
+    s.step = 40;
+    s.time = s.strain = 0.4;
+    s.box = Box(10, 11, 12);
+    s.particles = &p;
+    s.contact_pairs = {0, 1, 2, 5};
+    s.contact_force = {1, 2, 3, 4, 5, 6};
+    f.write_snapshot(s);
+  }
+  h5::File f = h5::File::open(path, false);
+  EXPECT_EQ(h5::string_attribute(f.id(), ".", "case"), "title: x\n");
+  EXPECT_EQ(h5::int_attribute(f.id(), ".", "threads"), 2);
+  const auto strain = read_series(f.id(), "strain");
+  ASSERT_EQ(strain.size(), 5u);
+  EXPECT_EQ(strain[3], 0.1 * 3);
+  // eta_r is the total shear stress over the row's shear rate.
+  EXPECT_DOUBLE_EQ(read_series(f.id(), "eta_r")[4], (2.0 + 4) / 2.0);
+  EXPECT_DOUBLE_EQ(read_series(f.id(), "stress/contact_normal", 1)[2], -6.0);
+  EXPECT_DOUBLE_EQ(read_series(f.id(), "stress/total", 3)[1], 3.0);
+  const auto pos = h5::read_doubles(f.id(), "snapshots/000000/position");
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(pos[3 * i + a], p.position[i][a]);  // bit-exact
+  EXPECT_EQ(h5::read_ints(f.id(), "snapshots/000000/contact_pairs")[3], 5);
+}
+
+TEST(RunFile, ReopenTruncatesToTheCheckpoint) {
+  const std::string path = temp("truncate.h5");
+  const Particles p = some_particles(3);
+  {
+    RunFile f = RunFile::create(path, {"", 1});
+    Snapshot s;
+    s.particles = &p;
+    for (int k = 0; k < 6; ++k) f.append(row(k));
+    f.write_snapshot(s);
+    f.write_snapshot(s);
+  }
+  {
+    RunFile f = RunFile::reopen(path, 4, 1);
+    EXPECT_EQ(f.series_rows(), 4u);
+    EXPECT_EQ(f.snapshot_count(), 1u);
+    f.append(row(9));
+  }
+  h5::File f = h5::File::open(path, false);
+  const auto step = read_series(f.id(), "step");
+  ASSERT_EQ(step.size(), 5u);
+  EXPECT_EQ(step[4], 90.0);
+  EXPECT_FALSE(h5::exists(f.id(), "snapshots/000001"));
+  EXPECT_THROW(RunFile::reopen(path, 7, 1), std::runtime_error);
+}
+
+TEST(Checkpoint, RoundTripIsBitExact) {
+  const std::string path = temp("checkpoint.h5");
+  Checkpoint c;
+  c.state.particles = some_particles(5);
+  c.state.time = 1.0 / 3.0;
+  c.state.strain = 2.0 / 3.0;
+  c.state.step = 12345;
+  c.clock = {0.67, 1.0, 1.5, 67, 1};
+  c.fingerprint = "physics";
+  c.rng = "123 456";
+  c.threads = 2;
+  write_checkpoint(path, c);
+  EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+  const Checkpoint d = read_checkpoint(path, "physics");
+  EXPECT_EQ(d.state.step, 12345);
+  EXPECT_EQ(d.state.strain, c.state.strain);
+  EXPECT_EQ(d.clock.series_rows, 67);
+  EXPECT_EQ(d.rng, "123 456");
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_EQ(d.state.particles.position[i], c.state.particles.position[i]);
+    EXPECT_EQ(d.state.particles.velocity[i], c.state.particles.velocity[i]);
+    EXPECT_EQ(d.state.particles.species[i], c.state.particles.species[i]);
+  }
+}
+
+TEST(Checkpoint, RefusesOtherCaseCorruptFileAndNaN) {
+  const std::string path = temp("refuse.h5");
+  Checkpoint c;
+  c.state.particles = some_particles(3);
+  c.fingerprint = "case A";
+  write_checkpoint(path, c);
+  try {
+    read_checkpoint(path, "case B");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("belongs to another case"), std::string::npos);
+  }
+  const std::string garbage = temp("garbage.h5");
+  std::ofstream(garbage) << "not hdf5";
+  EXPECT_THROW(read_checkpoint(garbage, "case A"), InputError);
+  c.state.particles.position[1].y() = std::nan("");
+  write_checkpoint(path, c);
+  try {
+    read_checkpoint(path, "case A");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("position of particle 1 is not finite"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Xdmf, EveryReferencedDatasetExists) {
+  const std::string path = temp("xdmf.h5");
+  const Particles p = some_particles(4);
+  std::vector<SnapshotInfo> info;
+  {
+    RunFile f = RunFile::create(path, {"", 1});
+    Snapshot s;
+    s.particles = &p;
+    f.write_snapshot(s);
+    s.time = 0.5;
+    f.write_snapshot(s);
+    info = f.snapshots();
+  }
+  const std::string x = xdmf_text("xdmf.h5", info);
+  h5::File f = h5::File::open(path, false);
+  const std::regex ref(R"(>xdmf\.h5:(/[^<]+)<)");
+  int count = 0;
+  for (auto it = std::sregex_iterator(x.begin(), x.end(), ref); it != std::sregex_iterator(); ++it, ++count)
+    EXPECT_TRUE(h5::exists(f.id(), (*it)[1].str())) << (*it)[1].str();
+  EXPECT_EQ(count, 2 * 4);  // position, radius, velocity, angular_velocity per snapshot
+  EXPECT_NE(x.find("<Time Value=\"0.5\"/>"), std::string::npos);
+}
