@@ -22,6 +22,13 @@ struct PairGeometry {
   double r;        // |d|
   double a_i, a_j;
   double gap() const { return r - a_i - a_j; }
+  // Harmonic radius a-bar = 2 a_i a_j / (a_i + a_j) (paper 000, eqs. 6-7 and Appendix B).
+  double harmonic_radius() const { return 2.0 * a_i * a_j / (a_i + a_j); }
+  // Lever arms from each centre to the contact point, l_i = a_i r / (a_i + a_j) and l_j = a_j r / (a_i + a_j)
+  // (paper 004, eq. 11). They add up to r, so a tangential force conserves angular momentum exactly, and a rigid
+  // rotation of the pair has zero slip at the contact point, whether the spheres overlap or not.
+  double lever_i() const { return a_i * r / (a_i + a_j); }
+  double lever_j() const { return a_j * r / (a_i + a_j); }
   static PairGeometry from(const Vec3& d, double a_i, double a_j) {
     const double r = d.norm();
     return {d, d / r, r, a_i, a_j};
@@ -35,6 +42,11 @@ struct RelativeMotion {
   // Velocity of the surface of j relative to that of i at the contact point (paper 000, eq. 5 context).
   Vec3 surface_velocity(const PairGeometry& g) const {
     return (u_j - u_i) - (g.a_i * omega_i + g.a_j * omega_j).cross(g.n);
+  }
+  // The same, evaluated at the contact point (lever arms of paper 004, eq. 11). Differs from surface_velocity by
+  // O(gap) and is exactly zero for a rigid rotation of the pair (objective); the frictional laws use it.
+  Vec3 contact_velocity(const PairGeometry& g) const {
+    return (u_j - u_i) - (g.lever_i() * omega_i + g.lever_j() * omega_j).cross(g.n);
   }
 };
 
@@ -53,6 +65,29 @@ struct PairForce {
     for (const auto& f : on_j) t += f;
     return t;
   }
+  PairForce& operator+=(const PairForce& o) {
+    for (std::size_t c = 0; c < contribution_count; ++c) on_j[c] += o.on_j[c];
+    torque_i += o.torque_i;
+    torque_j += o.torque_j;
+    return *this;
+  }
+  // A tangential force on j acting at the contact point: torques (l_i n) x (-F) on i and (-l_j n) x F on j
+  // (paper 000 eqs. 4d-4e with the lever arms of paper 004 eq. 11), so tau_i + tau_j + d x F = 0.
+  void add_tangential(const PairGeometry& g, const Vec3& f_on_j, Contribution c) {
+    (*this)[c] += f_on_j;
+    const Vec3 nxf = g.n.cross(f_on_j);
+    torque_i -= g.lever_i() * nxf;
+    torque_j -= g.lever_j() * nxf;
+  }
 };
+
+// Pair stresslet of one force contribution, S = -sym(d F_j^T) (paper 000 eqs. 9c-9d with F_ij = -F_j). Summed over
+// pairs and divided by the volume it gives that contribution's Sigma. Split between the two particles in the
+// ratio a_i : a_j when a per-particle stresslet is needed (paper 004, eq. 12; see stresslet_share_i).
+inline Mat3 pair_stresslet(const PairGeometry& g, const Vec3& f_on_j) { return -sym_outer(g.d, f_on_j); }
+inline Mat3 pair_stresslet(const PairGeometry& g, const PairForce& f, Contribution c) {
+  return pair_stresslet(g, f[c]);
+}
+inline double stresslet_share_i(const PairGeometry& g) { return g.a_i / (g.a_i + g.a_j); }
 
 }  // namespace suspend

@@ -19,6 +19,8 @@ struct SoftRepulsionParams {
 
 struct SoftRepulsion {
   SoftRepulsionParams p;
+  void validate() const { p.validate(); }
+  double range() const { return 0.0; }  // acts only on overlap
   PairForce operator()(const PairGeometry& g) const {
     PairForce f;
     const double delta = -g.gap();

@@ -1,0 +1,87 @@
+// The contact model of a run: one contact law composed with optional surface forces, chosen at set-up.
+//
+//   ContactLaw = std::variant<ComposedLaw<SoftRepulsion>, ComposedLaw<LinearSpring...>, ComposedLaw<HertzAdhesive>>
+// Every alternative has the same call shape, PairForce law(geometry, motion, dt, history), returns forces ON j by
+// contribution and torques on i and j (pair_geometry.hpp), and updates the pair history in place (in_contact false
+// when the pair carries no history any more). A driver visits the variant once per step (with_law or
+// evaluate_pairs) and loops over pairs inside, so the inner loop calls the concrete law directly: no virtual call,
+// no per-pair dispatch (STYLE.md habit 6).
+#pragma once
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+#include <variant>
+
+#include "dem/contact/hertz_adhesive.hpp"
+#include "dem/contact/linear_spring_dashpot.hpp"
+#include "dem/contact/pair_geometry.hpp"
+#include "dem/contact/pair_history.hpp"
+#include "dem/contact/soft_repulsion.hpp"
+#include "dem/contact/surface_forces.hpp"
+
+namespace suspend {
+
+template <class Contact>
+struct ComposedLaw {
+  Contact contact;
+  SurfaceForces surface;
+
+  void validate() const {
+    contact.validate();
+    surface.validate();
+  }
+  // Largest surface gap at which the pair interacts: the neighbour list must reach at least this far.
+  double range() const { return std::max(contact.range(), surface.range()); }
+
+  PairForce operator()(const PairGeometry& g, const RelativeMotion& m, double dt, PairHistory& h) const {
+    PairForce f;
+    if constexpr (requires { contact(g, m, dt, h); }) {
+      f = contact(g, m, dt, h);
+    } else {  // history-free contact laws
+      f = contact(g);
+      h.reset();
+    }
+    surface.add_to(g, f);
+    return f;
+  }
+  double energy(const PairGeometry& g) const { return contact.energy(g) + surface.energy(g); }
+};
+
+using ContactLaw =
+    std::variant<ComposedLaw<SoftRepulsion>, ComposedLaw<LinearSpringCoulomb>, ComposedLaw<LinearSpringCoulombRolling>,
+                 ComposedLaw<LinearSpringCriticalLoad>, ComposedLaw<LinearSpringCriticalLoadRolling>,
+                 ComposedLaw<HertzAdhesive>>;
+
+inline void validate(const ContactLaw& law) {
+  std::visit([](const auto& l) { l.validate(); }, law);
+}
+inline double interaction_range(const ContactLaw& law) {
+  return std::visit([](const auto& l) { return l.range(); }, law);
+}
+
+// Calls fn(concrete_law) once: a driver templated on the law writes its pair loop inside fn.
+template <class Fn>
+decltype(auto) with_law(const ContactLaw& law, Fn&& fn) {
+  return std::visit(std::forward<Fn>(fn), law);
+}
+
+// Evaluates pairs k in [begin, end) with one visit: pair(k) returns a PairState, history(k) the pair's history
+// (updated in place), sink(k, const PairForce&) consumes the result. Threaded drivers call it on disjoint chunks.
+struct PairState {
+  PairGeometry geometry;
+  RelativeMotion motion;
+};
+template <class PairFn, class HistoryFn, class SinkFn>
+void evaluate_pairs(const ContactLaw& law, std::size_t begin, std::size_t end, double dt, PairFn&& pair,
+                    HistoryFn&& history, SinkFn&& sink) {
+  std::visit(
+      [&](const auto& l) {
+        for (std::size_t k = begin; k < end; ++k) {
+          const PairState s = pair(k);
+          sink(k, l(s.geometry, s.motion, dt, history(k)));
+        }
+      },
+      law);
+}
+
+}  // namespace suspend

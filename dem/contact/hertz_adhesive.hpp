@@ -1,0 +1,132 @@
+// Hertz contact with constant adhesion at a roughness height (paper 004, section II D, eqs. 14-18).
+//
+// Contact while the surface gap h is below the roughness height h_r: compression delta = h_r - h > 0
+// (no overlap needed; the spheres' hydrodynamic surfaces stay apart by h). Forces ON j (n from i to j):
+//   normal      F_n n,  F_n = k_n delta^(3/2) - F_adh          (eq. 14; positive = repulsive)
+//               the Hertz part goes to contact_normal, -F_adh n to adhesion
+//   tangential  F_t = -k_t Y (Y = tangential stretch)           (eq. 15)
+//               sliding when |F_t| reaches mu_s (F_n + F_adh) = mu_s k_n delta^(3/2)   (eq. 16)
+//               k_t = (2/7) k_n sqrt(delta_bar), delta_bar = eps_bar h_r the typical compression   (eqs. 17-18):
+//               the classic 2/7 tangential/normal ratio applied to the Hertz secant stiffness
+//               F/delta = k_n sqrt(delta) at the typical compression, so k_t is a constant [force/length].
+//   torques     at the contact point, lever arms of eq. 11.
+// Zero-force compression delta_0 = (F_adh / k_n)^(2/3); pull-off force F_adh (the tension at delta -> 0+, where
+// friction vanishes too). No hysteresis: the contact ends as soon as delta <= 0 (paper 004 after eq. 16).
+//
+// Supplementary repulsion near hydrodynamic contact. Paper 004 (end of section II D) only says that "a
+// supplementary repulsive force is activated as particles approach hydrodynamic contact" to prevent overlap under
+// high stress; it gives neither formula nor parameters. Our choice, documented in docs/contact.md:
+//   F_s = k_s (h_s - h)^(3/2) n on j for h < h_s, with h_s = repulsion_onset * h_r and k_s = repulsion_stiffness
+//   * k_n (defaults 0.1 and 100: inactive at the typical compression 0.05 h_r, and it multiplies the stiffness of
+//   the last tenth of the roughness by 100). It is conservative, goes to contact_normal, and does not enter the
+//   friction limit (eq. 16 involves eq. 14 only). repulsion_stiffness = 0 switches it off.
+// Energy: (2/5) k_n delta^(5/2) - F_adh delta + (2/5) k_s (h_s - h)^(5/2); F_j = -dE/dr_j.
+// Units: lengths in a_1, forces in eta_0 gammadot a_1^2, k_n in eta_0 gammadot a_1^(1/2), k_t in eta_0 gammadot a_1.
+#pragma once
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "core/error.hpp"
+#include "dem/contact/pair_geometry.hpp"
+#include "dem/contact/pair_history.hpp"
+#include "dem/contact/stick_slide.hpp"
+
+namespace suspend {
+
+// Defaults: paper 004 FDM/FCM set-up: h_r = 5e-3 a_1, eps_bar = 5e-2, Gamma-bar = 1 (k_n from eq. 17 with
+// gammadot_0 = 1), G_adh with Gamma-bar x G_adh = 0.9 (section II E 2), mu_s = 0.5.
+struct HertzAdhesiveParams {
+  double roughness = 5.0e-3;                                                   // h_r
+  double eps_bar = 5.0e-2;                                                     // delta_bar / h_r
+  double kn = 6.0 * std::numbers::pi / std::pow(5.0e-2 * 5.0e-3, 1.5);         // Gamma-bar = 1
+  double f_adh = 0.9 * 6.0 * std::numbers::pi;                                 // G_adh = 0.9
+  double mu_s = 0.5;
+  double repulsion_onset = 0.1;      // h_s / h_r
+  double repulsion_stiffness = 1.0e2;  // k_s / k_n
+  void validate() const {
+    auto positive = [](double v, const char* key) {
+      if (!(v > 0.0)) throw InputError(std::string("contact.") + key + " = " + std::to_string(v) + " must be > 0");
+    };
+    auto non_negative = [](double v, const char* key) {
+      if (!(v >= 0.0)) throw InputError(std::string("contact.") + key + " = " + std::to_string(v) + " must be >= 0");
+    };
+    positive(roughness, "roughness");
+    positive(eps_bar, "eps_bar");
+    positive(kn, "kn");
+    non_negative(f_adh, "f_adh");
+    non_negative(mu_s, "mu_s");
+    non_negative(repulsion_stiffness, "repulsion_stiffness");
+    if (!(repulsion_onset >= 0.0 && repulsion_onset <= 1.0))
+      throw InputError("contact.repulsion_onset = " + std::to_string(repulsion_onset) + " must be in [0, 1]");
+  }
+};
+
+// Paper 004's dimensionless groups -> parameters, forces in eta_0 gammadot_0 a_1^2 (a_1 = 1):
+// Gamma-bar = 6 pi / (k_n (eps_bar h_r)^(3/2)) (eq. 17), G_adh = F_adh / (6 pi) (section II E 1).
+inline HertzAdhesiveParams hertz_adhesive_from_groups(double gamma_bar, double g_adh, double eps_bar,
+                                                      double roughness, double mu_s) {
+  if (!(gamma_bar > 0.0)) throw InputError("contact.gamma_bar = " + std::to_string(gamma_bar) + " must be > 0");
+  HertzAdhesiveParams p;
+  p.roughness = roughness;
+  p.eps_bar = eps_bar;
+  p.kn = 6.0 * std::numbers::pi / (gamma_bar * std::pow(eps_bar * roughness, 1.5));
+  p.f_adh = 6.0 * std::numbers::pi * g_adh;
+  p.mu_s = mu_s;
+  p.validate();
+  return p;
+}
+
+class HertzAdhesive {
+ public:
+  HertzAdhesive() : HertzAdhesive(HertzAdhesiveParams{}) {}
+  explicit HertzAdhesive(const HertzAdhesiveParams& params)
+      : p_(params), kt_(2.0 / 7.0 * params.kn * std::sqrt(params.eps_bar * params.roughness)),
+        h_s_(params.repulsion_onset * params.roughness), k_s_(params.repulsion_stiffness * params.kn) {
+    p_.validate();
+  }
+  const HertzAdhesiveParams& params() const { return p_; }
+  void validate() const { p_.validate(); }
+
+  double kt() const { return kt_; }                                   // eq. 18
+  double zero_force_compression() const { return std::pow(p_.f_adh / p_.kn, 2.0 / 3.0); }  // delta_0
+  double pull_off_force() const { return p_.f_adh; }
+  double range() const { return p_.roughness; }
+
+  PairForce operator()(const PairGeometry& g, const RelativeMotion& m, double dt, PairHistory& h) const {
+    PairForce f;
+    const double gap = g.gap();
+    const double delta = p_.roughness - gap;
+    if (!(delta > 0.0)) {
+      h.reset();
+      return f;
+    }
+    h.in_contact = true;
+    const double elastic = p_.kn * delta * std::sqrt(delta);
+    const double s = h_s_ - gap;
+    const double supplementary = s > 0.0 ? k_s_ * s * std::sqrt(s) : 0.0;
+    f[Contribution::contact_normal] = (elastic + supplementary) * g.n;
+    f[Contribution::adhesion] = -p_.f_adh * g.n;
+
+    const Vec3 u_c = m.contact_velocity(g);
+    const Vec3 u_t = u_c - u_c.dot(g.n) * g.n;
+    const StickSlideResult t = stick_slide(h.tangential_stretch, g.n, u_t, dt, kt_, p_.mu_s * elastic);
+    f.add_tangential(g, t.force_on_j, Contribution::contact_tangential);
+    return f;
+  }
+
+  double energy(const PairGeometry& g) const {
+    const double gap = g.gap();
+    const double delta = p_.roughness - gap;
+    if (!(delta > 0.0)) return 0.0;
+    const double s = h_s_ - gap;
+    const double e_s = s > 0.0 ? 0.4 * k_s_ * s * s * std::sqrt(s) : 0.0;
+    return 0.4 * p_.kn * delta * delta * std::sqrt(delta) - p_.f_adh * delta + e_s;
+  }
+
+ private:
+  HertzAdhesiveParams p_;
+  double kt_, h_s_, k_s_;
+};
+
+}  // namespace suspend

@@ -1,0 +1,24 @@
+// The per-pair state a frictional contact carries from one step to the next (paper 000 eq. 5 and Appendix B).
+//
+//  * tangential_stretch xi: integral of the tangential contact velocity of j relative to i since the contact began,
+//    kept on the current tangent plane and capped at the Coulomb limit (force on j is -k_t xi).
+//  * rolling_stretch xi_r: the same for the rolling velocity u_r = a_ij n x (omega_i - omega_j).
+//  * in_contact: false once the pair separates; a new contact then starts from zero stretch (xi(t_0) = 0).
+// Orientation: stored for the ordered pair (i, j), d = r_j - r_i. Seen as (j, i) the tangential stretch changes
+// sign and the rolling stretch does not (u_r is symmetric under the swap); oriented_for_swap() applies this.
+// Units: lengths in a_1.
+#pragma once
+#include "core/vec.hpp"
+
+namespace suspend {
+
+struct PairHistory {
+  Vec3 tangential_stretch = Vec3::Zero();
+  Vec3 rolling_stretch = Vec3::Zero();
+  bool in_contact = false;
+
+  void reset() { *this = PairHistory{}; }
+  PairHistory swapped() const { return {-tangential_stretch, rolling_stretch, in_contact}; }
+};
+
+}  // namespace suspend
