@@ -3,4 +3,6 @@
 #include <CLI/CLI.hpp>
 
 namespace suspend::app {
+// `suspend pair`: two-sphere resistance functions of the lubrication model (apps/cmd_pair.cpp).
+void add_pair_command(CLI::App& app);
 }  // namespace suspend::app
