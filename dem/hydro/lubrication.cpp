@@ -104,15 +104,20 @@ void PairLubrication::scalars(double gap, ResistanceScalars& from_i, ResistanceS
     return;
   }
   const double xi = scaled_gap(gap);
-  from_i = lubrication_scalars(from_i_, xi);
-  from_j = lubrication_scalars(from_j_, xi);
+  const double log_inv_xi = std::log(1.0 / xi);  // shared by both perspectives
+  from_i = lubrication_scalars(from_i_, xi, log_inv_xi);
+  from_j = lubrication_scalars(from_j_, xi, log_inv_xi);
 }
 
 Matrix12 PairLubrication::resistance(const Vec3& n, double gap) const {
-  Matrix12 r = Matrix12::Zero();
-  if (!active(gap)) return r;
+  if (!active(gap)) return Matrix12::Zero();
   ResistanceScalars si, sj;
   scalars(gap, si, sj);
+  return assemble(n, si, sj);
+}
+
+Matrix12 PairLubrication::assemble(const Vec3& n, const ResistanceScalars& si, const ResistanceScalars& sj) const {
+  Matrix12 r;  // all 16 blocks are written below
   const Vec3 m = -n;  // d seen from j
   const double ai = a_i_, aj = a_j_;
   const double fa_i = 6.0 * pi * ai, fa_j = 6.0 * pi * aj;
@@ -142,10 +147,15 @@ Matrix12 PairLubrication::resistance(const Vec3& n, double gap) const {
 }
 
 Vector12 PairLubrication::strain_forces(const Vec3& n, double gap, const Mat3& e_i, const Mat3& e_j) const {
-  Vector12 f = Vector12::Zero();
-  if (!active(gap)) return f;
+  if (!active(gap)) return Vector12::Zero();
   ResistanceScalars si, sj;
   scalars(gap, si, sj);
+  return strain_response(n, si, sj, e_i, e_j);
+}
+
+Vector12 PairLubrication::strain_response(const Vec3& n, const ResistanceScalars& si, const ResistanceScalars& sj,
+                                          const Mat3& e_i, const Mat3& e_j) const {
+  Vector12 f;
   const Vec3 m = -n;
   const double ai = a_i_, aj = a_j_;
   const double fg_i = 4.0 * pi * ai * ai, fg_j = 4.0 * pi * aj * aj;
@@ -161,14 +171,14 @@ Vector12 PairLubrication::strain_forces(const Vec3& n, double gap, const Mat3& e
 PairHydroForce PairLubrication::evaluate(const Vec3& n, double gap, const PairMotion& mo) const {
   PairHydroForce out;
   if (!active(gap)) return out;
-  const Vector12 f = -resistance(n, gap) * mo.stacked() + strain_forces(n, gap, mo.e_i, mo.e_j);
+  ResistanceScalars si, sj;
+  scalars(gap, si, sj);
+  const Vector12 f = -assemble(n, si, sj) * mo.stacked() + strain_response(n, si, sj, mo.e_i, mo.e_j);
   out.force_i = f.segment<3>(0);
   out.torque_i = f.segment<3>(3);
   out.force_j = f.segment<3>(6);
   out.torque_j = f.segment<3>(9);
 
-  ResistanceScalars si, sj;
-  scalars(gap, si, sj);
   const Vec3 m = -n;
   const double ai = a_i_, aj = a_j_;
   const double fg_i = 4.0 * pi * ai * ai, fg_j = 4.0 * pi * aj * aj;

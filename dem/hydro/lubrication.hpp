@@ -77,6 +77,10 @@ class PairLubrication {
   double a_j() const { return a_j_; }
 
  private:
+  Matrix12 assemble(const Vec3& n, const ResistanceScalars& si, const ResistanceScalars& sj) const;
+  Vector12 strain_response(const Vec3& n, const ResistanceScalars& si, const ResistanceScalars& sj, const Mat3& e_i,
+                           const Mat3& e_j) const;
+
   double a_i_, a_j_;
   LubricationParams params_;
   LubricationCoefficients from_i_, from_j_;

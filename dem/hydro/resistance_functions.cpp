@@ -36,8 +36,12 @@ LubricationCoefficients LubricationCoefficients::for_ratio(double lambda) {
 }
 
 ResistanceScalars lubrication_scalars(const LubricationCoefficients& c, double xi) {
+  return lubrication_scalars(c, xi, std::log(1.0 / xi));
+}
+
+ResistanceScalars lubrication_scalars(const LubricationCoefficients& c, double xi, double log_inv_xi) {
   const double inv = 1.0 / xi;
-  const double L = std::log(inv);
+  const double L = log_inv_xi;
   ResistanceScalars s;
   s.xi = xi;
   s.x11a = c.g1xa * inv + c.g2xa * L;

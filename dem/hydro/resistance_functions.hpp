@@ -53,6 +53,8 @@ struct ResistanceScalars {
 
 // Lubrication part only (no Stokes drag): the singular terms at scaled gap xi > 0. No allocation, no branches.
 ResistanceScalars lubrication_scalars(const LubricationCoefficients& c, double xi);
+// Same, with ln(1/xi) supplied by the caller (one logarithm per pair for both spheres).
+ResistanceScalars lubrication_scalars(const LubricationCoefficients& c, double xi, double log_inv_xi);
 
 // Isolated-sphere drag added to the "11" functions of A, C and M (X11A = Y11A = X11C = Y11C = X11M = Y11M = 1).
 void add_stokes_drag(ResistanceScalars& s);
