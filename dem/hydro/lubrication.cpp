@@ -91,6 +91,12 @@ PairLubrication::PairLubrication(double a_i, double a_j, const LubricationParams
   if (!(a_i > 0.0) || !(a_j > 0.0))
     throw InputError("lubrication pair radii must be > 0 (got " + std::to_string(a_i) + ", " + std::to_string(a_j) +
                      ")");
+  // The ln(1/xi) terms change sign at xi = 1: beyond it the model would no longer dissipate (paper 002 App. B:
+  // the outer cutoff cannot be arbitrarily large).
+  if (!(scaled_gap(params.outer_cutoff) < 1.0))
+    throw InputError("lubrication.outer_cutoff = " + std::to_string(params.outer_cutoff) +
+                     " is too large for radii " + std::to_string(a_i) + " and " + std::to_string(a_j) +
+                     ": need 2 h_out/(a_i + a_j) + regularization < 1");
 }
 
 double PairLubrication::scaled_gap(double gap) const {

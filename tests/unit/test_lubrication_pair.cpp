@@ -245,4 +245,6 @@ TEST(PairLubrication, ParametersAreValidated) {
   EXPECT_THROW(params(-0.1, 0.3, 0.0).validate(), InputError);
   EXPECT_THROW(params(0.0, 0.3, -1.0).validate(), InputError);
   EXPECT_THROW(PairLubrication(0.0, 1.0, LubricationParams{}), InputError);
+  EXPECT_THROW(PairLubrication(1.0, 1.0, params(1e-3, 1.0, 0.0)), InputError);  // xi_out = 1: ln(1/xi) = 0
+  EXPECT_NO_THROW(PairLubrication(1.0, 1.0, params(1e-3, 0.9, 0.0)));
 }

@@ -61,7 +61,7 @@ TEST(StokesDrag, FaxenCorrectionsInWavyShear) {
     EXPECT_NEAR(r.torque.z(), -8.0 * pi * a * a * a * (1.0 + 20.0 * k * std::cos(k * y)) / 2.0, 1e-9);
     const double sxy = 20.0 / 3.0 * pi * a * a * a * (1.0 + 20.0 * k * std::cos(k * y) * (1.0 - k * k * a * a / 10.0)) / 2.0;
     EXPECT_NEAR(r.stresslet(0, 1), sxy, 1e-10 * std::abs(sxy));
-    // The Faxen term is not negligible here: (k a)^2/6 = 4%.
+    // The Faxen term is not negligible here: (k a)^2/6 = 41%.
     EXPECT_GT(std::abs(r.force.x() - 6.0 * pi * a * flow.velocity(x).x()), 0.01 * 6.0 * pi * a * 20.0 * std::abs(std::sin(k * y)));
   }
 }
