@@ -26,15 +26,21 @@ struct PairOptions {
   double outer_cutoff = -1.0;  // none
 };
 
+std::string str(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
 void check(const PairOptions& o) {
   auto require = [](bool ok, const std::string& msg) {
     if (!ok) throw InputError(msg);
   };
-  require(std::isfinite(o.a1) && o.a1 > 0.0, "--a1 = " + std::to_string(o.a1) + ": the radius must be > 0");
-  require(std::isfinite(o.a2) && o.a2 > 0.0, "--a2 = " + std::to_string(o.a2) + ": the radius must be > 0");
-  require(std::isfinite(o.gap) && o.gap >= 0.0, "--gap = " + std::to_string(o.gap) + ": the surface gap must be >= 0");
+  require(std::isfinite(o.a1) && o.a1 > 0.0, "--a1 = " + str(o.a1) + ": the radius must be > 0");
+  require(std::isfinite(o.a2) && o.a2 > 0.0, "--a2 = " + str(o.a2) + ": the radius must be > 0");
+  require(std::isfinite(o.gap) && o.gap >= 0.0, "--gap = " + str(o.gap) + ": the surface gap must be >= 0");
   require(std::isfinite(o.regularization) && o.regularization >= 0.0,
-          "--regularization = " + std::to_string(o.regularization) + ": must be >= 0");
+          "--regularization = " + str(o.regularization) + ": must be >= 0");
   require(o.gap > 0.0 || o.regularization > 0.0, "--gap = 0 needs --regularization > 0 (lubrication is singular)");
 }
 
