@@ -14,19 +14,6 @@ constexpr double pi = std::numbers::pi;
 
 Mat3 normal_projector(const Vec3& d) { return d * d.transpose(); }
 
-// A or C block: scale (X d d + Y (I - d d)).
-Mat3 axisymmetric(double scale, const Vec3& d, double x, double y) {
-  const Mat3 nn = normal_projector(d);
-  return scale * (x * nn + y * (Mat3::Identity() - nn));
-}
-
-// B block (torque from velocity): B v = scale Y (v x d), i.e. B = -scale Y [d]_x.
-Mat3 coupling(double scale, const Vec3& d, double y) {
-  Mat3 cross;
-  cross << 0.0, -d.z(), d.y(), d.z(), 0.0, -d.x(), -d.y(), d.x(), 0.0;
-  return -scale * y * cross;
-}
-
 // Force of strain E through G^{ba}_{jki} E_jk: X (d.E.d) d + 2 Y (E d - (d.E.d) d).
 Vec3 strain_force(double scale, const Vec3& d, double x, double y, const Mat3& e) {
   const Vec3 ed = e * d;
@@ -124,27 +111,32 @@ Matrix12 PairLubrication::resistance(const Vec3& n, double gap) const {
 
 Matrix12 PairLubrication::assemble(const Vec3& n, const ResistanceScalars& si, const ResistanceScalars& sj) const {
   Matrix12 r;  // all 16 blocks are written below
-  const Vec3 m = -n;  // d seen from j
+  // d d^T is the same seen from i (d = n) and from j (d = -n); [d]_x flips sign.
+  const Mat3 nn = normal_projector(n);
+  const Mat3 tt = Mat3::Identity() - nn;
+  Mat3 nx;
+  nx << 0.0, -n.z(), n.y(), n.z(), 0.0, -n.x(), -n.y(), n.x(), 0.0;
   const double ai = a_i_, aj = a_j_;
   const double fa_i = 6.0 * pi * ai, fa_j = 6.0 * pi * aj;
   const double fb_i = 4.0 * pi * ai * ai, fb_j = 4.0 * pi * aj * aj;
   const double fc_i = 8.0 * pi * ai * ai * ai, fc_j = 8.0 * pi * aj * aj * aj;
 
   // Translation (A): self blocks from each particle, the pair block from i and its transpose (reciprocity).
-  r.block<3, 3>(0, 0) = axisymmetric(fa_i, n, si.x11a, si.y11a);
-  r.block<3, 3>(6, 6) = axisymmetric(fa_j, m, sj.x11a, sj.y11a);
-  r.block<3, 3>(0, 6) = axisymmetric(fa_i, n, si.x12a, si.y12a);
-  r.block<3, 3>(6, 0) = r.block<3, 3>(0, 6).transpose();
+  r.block<3, 3>(0, 0) = fa_i * (si.x11a * nn + si.y11a * tt);
+  r.block<3, 3>(6, 6) = fa_j * (sj.x11a * nn + sj.y11a * tt);
+  r.block<3, 3>(0, 6) = fa_i * (si.x12a * nn + si.y12a * tt);
+  r.block<3, 3>(6, 0) = r.block<3, 3>(0, 6);  // symmetric block
   // Rotation (C).
-  r.block<3, 3>(3, 3) = axisymmetric(fc_i, n, si.x11c, si.y11c);
-  r.block<3, 3>(9, 9) = axisymmetric(fc_j, m, sj.x11c, sj.y11c);
-  r.block<3, 3>(3, 9) = axisymmetric(fc_i, n, si.x12c, si.y12c);
-  r.block<3, 3>(9, 3) = r.block<3, 3>(3, 9).transpose();
-  // Coupling (B): torque rows from velocity columns; force rows from rotation columns are the transposes.
-  r.block<3, 3>(3, 0) = coupling(fb_i, n, si.y11b);  // T_i from U_i
-  r.block<3, 3>(3, 6) = coupling(fb_i, n, si.y12b);  // T_i from U_j
-  r.block<3, 3>(9, 6) = coupling(fb_j, m, sj.y11b);  // T_j from U_j
-  r.block<3, 3>(9, 0) = coupling(fb_j, m, sj.y12b);  // T_j from U_i
+  r.block<3, 3>(3, 3) = fc_i * (si.x11c * nn + si.y11c * tt);
+  r.block<3, 3>(9, 9) = fc_j * (sj.x11c * nn + sj.y11c * tt);
+  r.block<3, 3>(3, 9) = fc_i * (si.x12c * nn + si.y12c * tt);
+  r.block<3, 3>(9, 3) = r.block<3, 3>(3, 9);
+  // Coupling (B v = Y v x d = -Y [d]_x v): torque rows from velocity columns; force rows from rotation columns are
+  // the transposes. Seen from j, d = -n.
+  r.block<3, 3>(3, 0) = (-fb_i * si.y11b) * nx;  // T_i from U_i
+  r.block<3, 3>(3, 6) = (-fb_i * si.y12b) * nx;  // T_i from U_j
+  r.block<3, 3>(9, 6) = (fb_j * sj.y11b) * nx;   // T_j from U_j
+  r.block<3, 3>(9, 0) = (fb_j * sj.y12b) * nx;   // T_j from U_i
   r.block<3, 3>(0, 3) = r.block<3, 3>(3, 0).transpose();
   r.block<3, 3>(6, 3) = r.block<3, 3>(3, 6).transpose();
   r.block<3, 3>(6, 9) = r.block<3, 3>(9, 6).transpose();
