@@ -217,6 +217,25 @@ TEST(PairLubrication, ApproachingPairGivesCompressiveStresslet) {
   EXPECT_NEAR((f.stresslet_i - f.stresslet_j).norm(), 0.0, 1e-12 * f.stresslet_i.norm());
 }
 
+// In the lubrication limit the squeeze force acts at the gap, a lever arm a_i from the centre of i: the stresslet of
+// each sphere is the deviatoric part of -a_alpha n (F_j . n) n (Batchelor & Green 1972's force-dipole form, paper 000
+// eq. 9b), so S_i / S_j = a_i / a_j and the pair's stresslet is the deviatoric part of -sym(d F_j).
+TEST(PairLubrication, SqueezeStressletIsTheForceDipoleAtTheGap) {
+  for (double lambda : {1.0, 3.0, 0.5}) {
+    const double a_i = 1.0, a_j = lambda, gap = 1e-7;
+    const PairLubrication law(a_i, a_j, params(1e-9));
+    const Vec3 n = Vec3(1.0, 2.0, 2.0) / 3.0;
+    PairMotion m;
+    m.du_i = 0.4 * n;
+    m.du_j = -0.1 * n;
+    const PairHydroForce f = law.evaluate(n, gap, m);
+    const Mat3 dev = n * n.transpose() - Mat3::Identity() / 3.0;
+    const double fn = f.force_j.dot(n);
+    EXPECT_NEAR((f.stresslet_i + a_i * fn * dev).norm(), 0.0, 1e-4 * a_i * std::abs(fn)) << "lambda " << lambda;
+    EXPECT_NEAR((f.stresslet_j + a_j * fn * dev).norm(), 0.0, 1e-4 * a_j * std::abs(fn)) << "lambda " << lambda;
+  }
+}
+
 TEST(PairLubrication, SaturationRegularisationAndTruncation) {
   const PairLubrication law(1.0, 2.0, params(0.01, 0.3, 0.0));
   const Vec3 n(0.0, 0.0, 1.0);
