@@ -5,4 +5,6 @@
 namespace suspend::app {
 void add_run_command(CLI::App& app);
 void add_check_command(CLI::App& app);
+// `suspend pair`: two-sphere resistance functions of the lubrication model (apps/cmd_pair.cpp).
+void add_pair_command(CLI::App& app);
 }  // namespace suspend::app

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   suspend::app::add_run_command(app);
   suspend::app::add_check_command(app);
+  suspend::app::add_pair_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
