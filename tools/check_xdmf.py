@@ -1,0 +1,40 @@
+#!/usr/bin/python3
+"""Checks that an XDMF file written by suspend parses as XML and that every HDF5 dataset it names exists with the
+shape it declares. Usage: tools/check_xdmf.py RUN_DIR/run.xdmf   (exit 0 when valid, 1 with a message otherwise)."""
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+import h5py
+
+
+def main(path):
+    root = ET.parse(path).getroot()
+    if root.tag != "Xdmf":
+        return f"{path}: root element is {root.tag}, not Xdmf"
+    base = os.path.dirname(os.path.abspath(path))
+    items = root.iter("DataItem")
+    count = 0
+    for item in items:
+        if item.get("Format") != "HDF":
+            continue
+        file_name, dataset = item.text.strip().split(":", 1)
+        dims = tuple(int(d) for d in item.get("Dimensions").split())
+        with h5py.File(os.path.join(base, file_name), "r") as f:
+            if dataset not in f:
+                return f"{path}: {file_name}:{dataset} does not exist"
+            if f[dataset].shape != dims:
+                return f"{path}: {dataset} has shape {f[dataset].shape}, the XDMF says {dims}"
+        count += 1
+    grids = [g for g in root.iter("Grid") if g.get("GridType") == "Uniform"]
+    if not grids:
+        return f"{path}: no snapshot grids"
+    print(f"{path}: valid XDMF, {len(grids)} time steps, {count} datasets checked")
+    return None
+
+
+if __name__ == "__main__":
+    error = main(sys.argv[1])
+    if error:
+        print(error, file=sys.stderr)
+        sys.exit(1)
