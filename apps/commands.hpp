@@ -3,4 +3,6 @@
 #include <CLI/CLI.hpp>
 
 namespace suspend::app {
+// suspend mobility: FCM velocities, angular velocities and stresslets of spheres in a periodic box.
+void add_mobility_command(CLI::App& app);
 }  // namespace suspend::app

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <string>
 
+#include "apps/commands.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 
@@ -10,6 +11,7 @@ int main(int argc, char** argv) {
   CLI::App app{"suspend: rheology of dense non-Brownian suspensions (lubrication-DEM and FCM)"};
   app.set_version_flag("--version", std::string("suspend ") + suspend::version + " (git " + suspend::git_commit + ")");
   app.require_subcommand(1);
+  suspend::app::add_mobility_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

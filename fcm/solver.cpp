@@ -160,13 +160,17 @@ MobilityResult Solver::solve(const MobilityProblem& pb) {
     // Preconditioned CG on K S = E_inf + e'(F, T, 0), K S = -e'(0, 0, S): symmetric positive (the adjoint
     // structure of spreading.hpp). Jacobi preconditioner: the isolated-sphere inverse, (20/3) pi a^3.
     std::vector<double> precond(n);
-    // The residual is measured against |r0|^2 + |strain the guess induces on isolated spheres|^2, an estimate of
-    // |E_inf + e'(F, T, 0)| that stays meaningful when the warm start is already converged.
+    // The residual is measured against a rate-of-strain scale that stays meaningful when the warm start is
+    // already converged or the right-hand side vanishes by symmetry: |r0|^2 plus, per particle, |E_inf|^2, the
+    // strain the guess induces on an isolated sphere and the rates F/(6 pi a^2), T/(8 pi a^3).
     double scale2 = dot(r, r);
     for (std::size_t i = 0; i < n; ++i) {
-      precond[i] = 1.0 / stresslet_self_mobility(pb.radii[i]);
+      const double ai = pb.radii[i];
+      precond[i] = 1.0 / stresslet_self_mobility(ai);
       const Mat3 self = res.stresslets[i] / precond[i];
-      scale2 += (self.array() * self.array()).sum();
+      scale2 += (self.array() * self.array()).sum() + e_inf.squaredNorm();
+      if (!pb.forces.empty()) scale2 += (pb.forces[i] * translational_self_mobility(ai) / ai).squaredNorm();
+      if (!pb.torques.empty()) scale2 += (pb.torques[i] * rotational_self_mobility(ai)).squaredNorm();
     }
     const double scale = std::sqrt(scale2);
     std::vector<Mat3> z(n), p(n), q(n);
