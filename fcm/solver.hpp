@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/vec.hpp"
+#include "fcm/disturbance.hpp"
 #include "fcm/fft.hpp"
 #include "fcm/sheared_grid.hpp"
 #include "fcm/spreading.hpp"
@@ -52,13 +53,6 @@ struct MobilityResult {
   std::vector<Mat3> strain_rates;  // particle rate of strain incl. the ambient one (~0 when rigid)
   int iterations = 0;              // conjugate-gradient iterations (each costs one Stokes solve)
   double residual = 0.0;           // final relative residual of the rigidity condition
-};
-
-// The disturbance (no ambient flow) caused by given forces, torques and stresslets.
-struct Disturbance {
-  std::vector<Vec3> velocities;
-  std::vector<Vec3> angular_velocities;
-  std::vector<Mat3> strain_rates;
 };
 
 // Wall-clock seconds spent in each stage since construction or reset_timings().
