@@ -69,6 +69,7 @@ void Solver::place(std::span<const Vec3> positions, std::span<const double> radi
       throw InputError("fcm: box too small for the envelope of particle " + std::to_string(i) +
                        " (needs L > 2 * truncation_widths * a / sqrt(pi))");
   }
+  order_ = grid_order(grid_, envelopes_);
 }
 
 void Solver::stokes_solve(std::span<const Vec3> forces, std::span<const Mat3> dipoles, std::span<Vec3> velocities,
@@ -77,7 +78,7 @@ void Solver::stokes_solve(std::span<const Vec3> forces, std::span<const Mat3> di
   double* field = fft_->real_data();
   double t0 = omp_get_wtime();
   std::fill(field, field + 3 * stride, 0.0);
-  spread(grid_, envelopes_, forces, dipoles, field, stride);
+  spread(grid_, envelopes_, forces, dipoles, field, stride, order_);
   double t1 = omp_get_wtime();
   timings_.spread += t1 - t0;
   fft_->forward(FftScaling::none);
@@ -87,7 +88,7 @@ void Solver::stokes_solve(std::span<const Vec3> forces, std::span<const Mat3> di
   double t3 = omp_get_wtime();
   fft_->inverse(FftScaling::none);
   double t4 = omp_get_wtime();
-  interpolate(grid_, envelopes_, field, stride, velocities, gradient_moments);
+  interpolate(grid_, envelopes_, field, stride, velocities, gradient_moments, order_);
   double t5 = omp_get_wtime();
   timings_.fft += (t2 - t1) + (t4 - t3);
   timings_.green += t3 - t2;

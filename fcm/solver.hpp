@@ -91,6 +91,7 @@ class Solver {
   ShearedGrid grid_;
   std::unique_ptr<VectorFft> fft_;
   std::vector<Envelope> envelopes_;
+  std::vector<std::uint32_t> order_;  // spatially sorted visiting order
   std::vector<Mat3> last_stresslets_;
   SolveTimings timings_;
 };

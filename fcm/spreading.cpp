@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "fcm/envelope.hpp"
 
@@ -13,52 +14,92 @@ namespace {
 
 double gaussian_norm(double sigma) { return std::pow(2.0 * std::numbers::pi * sigma * sigma, -1.5); }
 
+// Gaussian factors tabulated once per particle: along z and y (1-D), and along x' once per y row (the row centre
+// moves with y on the sheared lattice). The truncation sphere then only selects which entries are used.
+// Tables are filled with the exact recurrence exp(-(d+h)^2/2s^2) = exp(-d^2/2s^2) r, r <- r exp(-h^2/s^2).
+struct SupportTables {
+  std::vector<double> zm, zd, ym, yd, xm, xd;  // xm/xd: row-major [ky - ky0][kx - kx0[ky]]
+  std::vector<int> kx0;
+  std::vector<double> dx0;
+};
+
+void gaussian_row(double d0, double h, double a, int count, double* out) {
+  // out[i] = exp(-a (d0 + i h)^2)
+  double w = std::exp(-a * d0 * d0), r = std::exp(-a * (2.0 * d0 * h + h * h));
+  const double q = std::exp(-2.0 * a * h * h);
+  for (int i = 0; i < count; ++i) {
+    out[i] = w;
+    w *= r;
+    r *= q;
+  }
+}
+
 // Calls point(node, w_m, w_d, d) for every node within the truncation sphere of the envelope whose z plane
 // lies in [z_begin, z_end). w_m, w_d are the two Gaussians at the node, d the physical node - centre vector.
-// Along x the Gaussians are advanced by the exact recurrence exp(-(d+h)^2/2s^2) = exp(-d^2/2s^2) r,
-// r <- r exp(-h^2/s^2), so each node costs a few multiplications instead of two exponentials.
 template <class Point>
-void visit_support(const ShearedGrid& g, const Envelope& e, int z_begin, int z_end, Point&& point) {
+void visit_support(const ShearedGrid& g, const Envelope& e, int z_begin, int z_end, SupportTables& t,
+                   Point&& point) {
   const double hx = g.spacing.x(), hy = g.spacing.y(), hz = g.spacing.z();
   const double r2 = e.support * e.support;
   const double am = 0.5 / (e.sigma_m * e.sigma_m), ad = 0.5 / (e.sigma_d * e.sigma_d);
   const double cm = gaussian_norm(e.sigma_m), cd = gaussian_norm(e.sigma_d);
-  const double qm = std::exp(-2.0 * am * hx * hx), qd = std::exp(-2.0 * ad * hx * hx);
   const int kz0 = static_cast<int>(std::ceil((e.centre.z() - e.support) / hz));
   const int kz1 = static_cast<int>(std::floor((e.centre.z() + e.support) / hz));
+  // Skip particles with no plane in this thread's slab before tabulating anything.
+  bool any = false;
+  for (int kz = kz0; kz <= kz1 && !any; ++kz) {
+    const int iz = periodic_index(kz, g.n[2]);
+    any = iz >= z_begin && iz < z_end;
+  }
+  if (!any) return;
+  const int ky0 = static_cast<int>(std::ceil((e.centre.y() - e.support) / hy));
+  const int ky1 = static_cast<int>(std::floor((e.centre.y() + e.support) / hy));
+  const int nzs = kz1 - kz0 + 1, nys = ky1 - ky0 + 1;
+  const int width = static_cast<int>(std::ceil(2.0 * e.support / hx)) + 2;
+  t.zm.resize(nzs);
+  t.zd.resize(nzs);
+  t.ym.resize(nys);
+  t.yd.resize(nys);
+  t.kx0.resize(nys);
+  t.dx0.resize(nys);
+  t.xm.resize(static_cast<std::size_t>(nys) * width);
+  t.xd.resize(static_cast<std::size_t>(nys) * width);
+  gaussian_row(kz0 * hz - e.centre.z(), hz, am, nzs, t.zm.data());
+  gaussian_row(kz0 * hz - e.centre.z(), hz, ad, nzs, t.zd.data());
+  gaussian_row(ky0 * hy - e.centre.y(), hy, am, nys, t.ym.data());
+  gaussian_row(ky0 * hy - e.centre.y(), hy, ad, nys, t.yd.data());
+  for (int j = 0; j < nys; ++j) {
+    // Row centre in sheared coordinates: node x' = kx h_x is at physical x' + gamma_t y.
+    const double xc = e.centre.x() - g.shear_fraction * (ky0 + j) * hy;
+    t.kx0[j] = static_cast<int>(std::ceil((xc - e.support) / hx));
+    t.dx0[j] = t.kx0[j] * hx - xc;
+    gaussian_row(t.dx0[j], hx, am, width, &t.xm[static_cast<std::size_t>(j) * width]);
+    gaussian_row(t.dx0[j], hx, ad, width, &t.xd[static_cast<std::size_t>(j) * width]);
+  }
   for (int kz = kz0; kz <= kz1; ++kz) {
     const int iz = periodic_index(kz, g.n[2]);
     if (iz < z_begin || iz >= z_end) continue;
     const double dz = kz * hz - e.centre.z();
     const double ry2 = r2 - dz * dz;
     if (ry2 < 0.0) continue;
-    const double ry = std::sqrt(ry2);
-    const int ky0 = static_cast<int>(std::ceil((e.centre.y() - ry) / hy));
-    const int ky1 = static_cast<int>(std::floor((e.centre.y() + ry) / hy));
-    for (int ky = ky0; ky <= ky1; ++ky) {
-      const double y = ky * hy;
-      const double dy = y - e.centre.y();
+    const double zm = cm * t.zm[kz - kz0], zd = cd * t.zd[kz - kz0];
+    for (int j = 0; j < nys; ++j) {
+      const int ky = ky0 + j;
+      const double dy = ky * hy - e.centre.y();
       const double rx2 = ry2 - dy * dy;
       if (rx2 < 0.0) continue;
       const double rx = std::sqrt(rx2);
-      // Row centre in sheared coordinates: node x' = kx h_x is at physical x' + gamma_t y.
-      const double xc = e.centre.x() - g.shear_fraction * y;
-      const int kx0 = static_cast<int>(std::ceil((xc - rx) / hx));
-      const int kx1 = static_cast<int>(std::floor((xc + rx) / hx));
-      if (kx1 < kx0) continue;
-      const double dyz2 = dy * dy + dz * dz;
-      double dx = kx0 * hx - xc;
-      double wm = cm * std::exp(-am * (dx * dx + dyz2)), wd = cd * std::exp(-ad * (dx * dx + dyz2));
-      double rm = std::exp(-am * (2.0 * dx * hx + hx * hx)), rd = std::exp(-ad * (2.0 * dx * hx + hx * hx));
+      const double xc = t.kx0[j] * hx - t.dx0[j];
+      const int ka = std::max(static_cast<int>(std::ceil((xc - rx) / hx)), t.kx0[j]);
+      const int kb = std::min(static_cast<int>(std::floor((xc + rx) / hx)), t.kx0[j] + width - 1);
+      if (kb < ka) continue;
+      const double yzm = zm * t.ym[j], yzd = zd * t.yd[j];
+      const double* xm = &t.xm[static_cast<std::size_t>(j) * width];
+      const double* xd = &t.xd[static_cast<std::size_t>(j) * width];
       const std::size_t row = g.index(0, periodic_index(ky, g.n[1]), iz);
-      int ix = periodic_index(kx0, g.n[0]);
-      for (int kx = kx0; kx <= kx1; ++kx) {
-        point(row + static_cast<std::size_t>(ix), wm, wd, Vec3(dx, dy, dz));
-        wm *= rm;
-        wd *= rd;
-        rm *= qm;
-        rd *= qd;
-        dx += hx;
+      int ix = periodic_index(ka, g.n[0]);
+      for (int i = ka - t.kx0[j]; i <= kb - t.kx0[j]; ++i) {
+        point(row + static_cast<std::size_t>(ix), yzm * xm[i], yzd * xd[i], Vec3(t.dx0[j] + i * hx, dy, dz));
         if (++ix == g.n[0]) ix = 0;
       }
     }
@@ -86,8 +127,24 @@ Vec3 angular_velocity_of(const Mat3& a) {
 
 Mat3 strain_rate_of(const Mat3& a) { return -0.5 * (a + a.transpose()); }
 
+std::vector<std::uint32_t> grid_order(const ShearedGrid& g, std::span<const Envelope> envelopes) {
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> key(envelopes.size());
+  for (std::size_t p = 0; p < envelopes.size(); ++p) {
+    const Vec3& c = envelopes[p].centre;
+    const int iy = periodic_index(static_cast<int>(std::floor(c.y() / g.spacing.y())), g.n[1]);
+    const double xs = c.x() - g.shear_fraction * std::floor(c.y() / g.spacing.y()) * g.spacing.y();
+    const int ix = periodic_index(static_cast<int>(std::floor(xs / g.spacing.x())), g.n[0]);
+    const int iz = periodic_index(static_cast<int>(std::floor(c.z() / g.spacing.z())), g.n[2]);
+    key[p] = {g.index(ix, iy, iz), static_cast<std::uint32_t>(p)};
+  }
+  std::sort(key.begin(), key.end());
+  std::vector<std::uint32_t> order(envelopes.size());
+  for (std::size_t k = 0; k < key.size(); ++k) order[k] = key[k].second;
+  return order;
+}
+
 void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::span<const Vec3> forces,
-            std::span<const Mat3> dipoles, double* field, std::size_t stride) {
+            std::span<const Mat3> dipoles, double* field, std::size_t stride, std::span<const std::uint32_t> order) {
   const bool has_f = !forces.empty(), has_g = !dipoles.empty();
   if (!has_f && !has_g) return;
   const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(envelopes.size());
@@ -101,12 +158,14 @@ void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::s
     const int nz = grid.n[2];
     const int z_begin = static_cast<int>(static_cast<long>(nz) * t / threads);
     const int z_end = static_cast<int>(static_cast<long>(nz) * (t + 1) / threads);
-    for (std::ptrdiff_t p = 0; p < count; ++p) {
-      const Envelope& e = envelopes[static_cast<std::size_t>(p)];
-      const Vec3 f = has_f ? forces[static_cast<std::size_t>(p)] : Vec3::Zero();
+    SupportTables tables;
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+      const std::size_t p = order.empty() ? static_cast<std::size_t>(k) : order[static_cast<std::size_t>(k)];
+      const Envelope& e = envelopes[p];
+      const Vec3 f = has_f ? forces[p] : Vec3::Zero();
       // d/dx_j Delta_D = -d_j / sigma_D^2 Delta_D, so G_ij d_j Delta_D = -(G d)_i w_d / sigma_D^2.
-      const Mat3 gs = has_g ? Mat3(-dipoles[static_cast<std::size_t>(p)] / (e.sigma_d * e.sigma_d)) : Mat3::Zero();
-      visit_support(grid, e, z_begin, z_end, [&](std::size_t i, double wm, double wd, const Vec3& d) {
+      const Mat3 gs = has_g ? Mat3(-dipoles[p] / (e.sigma_d * e.sigma_d)) : Mat3::Zero();
+      visit_support(grid, e, z_begin, z_end, tables, [&](std::size_t i, double wm, double wd, const Vec3& d) {
         const Vec3 v = f * wm + (gs * d) * wd;
         fx[i] += v.x();
         fy[i] += v.y();
@@ -117,26 +176,32 @@ void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::s
 }
 
 void interpolate(const ShearedGrid& grid, std::span<const Envelope> envelopes, const double* field,
-                 std::size_t stride, std::span<Vec3> velocities, std::span<Mat3> gradient_moments) {
+                 std::size_t stride, std::span<Vec3> velocities, std::span<Mat3> gradient_moments,
+                 std::span<const std::uint32_t> order) {
   const bool want_u = !velocities.empty(), want_a = !gradient_moments.empty();
   const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(envelopes.size());
   const double dv = grid.cell_volume();
   const double* ux = field;
   const double* uy = field + stride;
   const double* uz = field + 2 * stride;
-#pragma omp parallel for schedule(dynamic, 4)
-  for (std::ptrdiff_t p = 0; p < count; ++p) {
-    const Envelope& e = envelopes[static_cast<std::size_t>(p)];
+#pragma omp parallel
+  {
+  SupportTables tables;
+#pragma omp for schedule(dynamic, 16)
+  for (std::ptrdiff_t k = 0; k < count; ++k) {
+    const std::size_t p = order.empty() ? static_cast<std::size_t>(k) : order[static_cast<std::size_t>(k)];
+    const Envelope& e = envelopes[p];
     Vec3 u = Vec3::Zero();
     Mat3 a = Mat3::Zero();
-    visit_support(grid, e, 0, grid.n[2], [&](std::size_t i, double wm, double wd, const Vec3& d) {
+    visit_support(grid, e, 0, grid.n[2], tables, [&](std::size_t i, double wm, double wd, const Vec3& d) {
       const Vec3 v(ux[i], uy[i], uz[i]);
       u += v * wm;
       a.noalias() += (v * wd) * d.transpose();
     });
     // A_ij = sum u_i d_j Delta_D dV with d_j Delta_D = -d_j / sigma_D^2 Delta_D.
-    if (want_u) velocities[static_cast<std::size_t>(p)] = u * dv;
-    if (want_a) gradient_moments[static_cast<std::size_t>(p)] = a * (-dv / (e.sigma_d * e.sigma_d));
+    if (want_u) velocities[p] = u * dv;
+    if (want_a) gradient_moments[p] = a * (-dv / (e.sigma_d * e.sigma_d));
+  }
   }
 }
 

@@ -9,7 +9,9 @@
 // `support` (a fixed number of monopole widths). Units: lengths in a_1.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <span>
+#include <vector>
 
 #include "core/vec.hpp"
 #include "fcm/sheared_grid.hpp"
@@ -32,12 +34,18 @@ Mat3 strain_rate_of(const Mat3& gradient_moment);
 
 // Adds the force density of all particles to the field (component c at field + c * stride). `forces` or
 // `dipoles` may be empty (treated as zero). OpenMP-parallel: each thread owns a slab of z planes, so no two
-// threads write the same node.
+// threads write the same node. `order` (optional) is the order in which particles are visited: a spatially
+// sorted order (grid_order) keeps the touched grid rows in cache.
 void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::span<const Vec3> forces,
-            std::span<const Mat3> dipoles, double* field, std::size_t stride);
+            std::span<const Mat3> dipoles, double* field, std::size_t stride,
+            std::span<const std::uint32_t> order = {});
 
 // Interpolates the velocity field onto every particle (velocities and/or gradient moments may be empty).
 void interpolate(const ShearedGrid& grid, std::span<const Envelope> envelopes, const double* field,
-                 std::size_t stride, std::span<Vec3> velocities, std::span<Mat3> gradient_moments);
+                 std::size_t stride, std::span<Vec3> velocities, std::span<Mat3> gradient_moments,
+                 std::span<const std::uint32_t> order = {});
+
+// Particle indices sorted by the grid cell (z, then y, then x') of their centres.
+std::vector<std::uint32_t> grid_order(const ShearedGrid& grid, std::span<const Envelope> envelopes);
 
 }  // namespace suspend::fcm
