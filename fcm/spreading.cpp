@@ -34,12 +34,22 @@ void gaussian_row(double d0, double h, double a, int count, double* out) {
   }
 }
 
-// Calls point(node, w_m, w_d, d) for every node within the truncation sphere of the envelope whose z plane
-// lies in [z_begin, z_end). w_m, w_d are the two Gaussians at the node, d the physical node - centre vector.
-template <class Point>
-void visit_support(const ShearedGrid& g, const Envelope& e, int z_begin, int z_end, SupportTables& t,
-                   Point&& point) {
+// One contiguous run of nodes inside the truncation sphere: nodes first .. first + count - 1 of the field, with
+// Gaussians w_m = yz_m xm[i], w_d = yz_d xd[i] and physical offset d = (dx + i h_x, dy, dz) from the centre.
+struct RowSegment {
+  std::size_t first;
+  int count;
+  const double* xm;
+  const double* xd;
+  double dx, dy, dz, yz_m, yz_d;
+};
+
+// Calls row(segment) for the runs of nodes within the truncation sphere of the envelope whose z plane lies in
+// [z_begin, z_end); a row that wraps around the periodic x' boundary is split in two runs.
+template <class Row>
+void visit_support(const ShearedGrid& g, const Envelope& e, int z_begin, int z_end, SupportTables& t, Row&& row) {
   const double hx = g.spacing.x(), hy = g.spacing.y(), hz = g.spacing.z();
+  const double inv_hx = 1.0 / hx;
   const double r2 = e.support * e.support;
   const double am = 0.5 / (e.sigma_m * e.sigma_m), ad = 0.5 / (e.sigma_d * e.sigma_d);
   const double cm = gaussian_norm(e.sigma_m), cd = gaussian_norm(e.sigma_d);
@@ -89,19 +99,21 @@ void visit_support(const ShearedGrid& g, const Envelope& e, int z_begin, int z_e
       const double rx2 = ry2 - dy * dy;
       if (rx2 < 0.0) continue;
       const double rx = std::sqrt(rx2);
-      const double xc = t.kx0[j] * hx - t.dx0[j];
-      const int ka = std::max(static_cast<int>(std::ceil((xc - rx) / hx)), t.kx0[j]);
-      const int kb = std::min(static_cast<int>(std::floor((xc + rx) / hx)), t.kx0[j] + width - 1);
+      // Node range [ka, kb] of the sphere's chord, relative to the tabulated row start kx0 (xc - kx0 h = -dx0).
+      const int ka = t.kx0[j] + std::max(static_cast<int>(std::ceil((-t.dx0[j] - rx) * inv_hx)), 0);
+      const int kb = t.kx0[j] + std::min(static_cast<int>(std::floor((-t.dx0[j] + rx) * inv_hx)), width - 1);
       if (kb < ka) continue;
       const double yzm = zm * t.ym[j], yzd = zd * t.yd[j];
       const double* xm = &t.xm[static_cast<std::size_t>(j) * width];
       const double* xd = &t.xd[static_cast<std::size_t>(j) * width];
-      const std::size_t row = g.index(0, periodic_index(ky, g.n[1]), iz);
-      int ix = periodic_index(ka, g.n[0]);
-      for (int i = ka - t.kx0[j]; i <= kb - t.kx0[j]; ++i) {
-        point(row + static_cast<std::size_t>(ix), yzm * xm[i], yzd * xd[i], Vec3(t.dx0[j] + i * hx, dy, dz));
-        if (++ix == g.n[0]) ix = 0;
-      }
+      const std::size_t base = g.index(0, periodic_index(ky, g.n[1]), iz);
+      const int i0 = ka - t.kx0[j];
+      const int ix = periodic_index(ka, g.n[0]);
+      const int total = kb - ka + 1, first_run = std::min(total, g.n[0] - ix);
+      row(RowSegment{base + ix, first_run, xm + i0, xd + i0, t.dx0[j] + i0 * hx, dy, dz, yzm, yzd});
+      if (first_run < total)
+        row(RowSegment{base, total - first_run, xm + i0 + first_run, xd + i0 + first_run,
+                       t.dx0[j] + (i0 + first_run) * hx, dy, dz, yzm, yzd});
     }
   }
 }
@@ -135,7 +147,12 @@ std::vector<std::uint32_t> grid_order(const ShearedGrid& g, std::span<const Enve
     const double xs = c.x() - g.shear_fraction * std::floor(c.y() / g.spacing.y()) * g.spacing.y();
     const int ix = periodic_index(static_cast<int>(std::floor(xs / g.spacing.x())), g.n[0]);
     const int iz = periodic_index(static_cast<int>(std::floor(c.z() / g.spacing.z())), g.n[2]);
-    key[p] = {g.index(ix, iy, iz), static_cast<std::uint32_t>(p)};
+    // Blocks of 8 nodes (~4 h = 2 a at h = a/2) ordered lexicographically: consecutive particles are neighbours
+    // in all three directions and share most of the grid rows they touch.
+    constexpr int b = 8;
+    const std::uint64_t bx = ix / b, by = iy / b, bz = iz / b;
+    const std::uint64_t nbx = (g.n[0] + b - 1) / b, nby = (g.n[1] + b - 1) / b;
+    key[p] = {((bz * nby + by) * nbx + bx) << 32 | g.index(ix, iy, iz), static_cast<std::uint32_t>(p)};
   }
   std::sort(key.begin(), key.end());
   std::vector<std::uint32_t> order(envelopes.size());
@@ -165,11 +182,20 @@ void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::s
       const Vec3 f = has_f ? forces[p] : Vec3::Zero();
       // d/dx_j Delta_D = -d_j / sigma_D^2 Delta_D, so G_ij d_j Delta_D = -(G d)_i w_d / sigma_D^2.
       const Mat3 gs = has_g ? Mat3(-dipoles[p] / (e.sigma_d * e.sigma_d)) : Mat3::Zero();
-      visit_support(grid, e, z_begin, z_end, tables, [&](std::size_t i, double wm, double wd, const Vec3& d) {
-        const Vec3 v = f * wm + (gs * d) * wd;
-        fx[i] += v.x();
-        fy[i] += v.y();
-        fz[i] += v.z();
+      const double hx = grid.spacing.x();
+      visit_support(grid, e, z_begin, z_end, tables, [&](const RowSegment& r) {
+        // gs d = gs.col(0) dx + (gs.col(1) dy + gs.col(2) dz): only the first term varies along the row.
+        const Vec3 b = gs.col(1) * r.dy + gs.col(2) * r.dz;
+        const double g0 = gs(0, 0), g1 = gs(1, 0), g2 = gs(2, 0);
+        double* px = fx + r.first;
+        double* py = fy + r.first;
+        double* pz = fz + r.first;
+        for (int i = 0; i < r.count; ++i) {
+          const double wm = r.yz_m * r.xm[i], wd = r.yz_d * r.xd[i], dx = r.dx + i * hx;
+          px[i] += f.x() * wm + (b.x() + g0 * dx) * wd;
+          py[i] += f.y() * wm + (b.y() + g1 * dx) * wd;
+          pz[i] += f.z() * wm + (b.z() + g2 * dx) * wd;
+        }
       });
     }
   }
@@ -193,10 +219,30 @@ void interpolate(const ShearedGrid& grid, std::span<const Envelope> envelopes, c
     const Envelope& e = envelopes[p];
     Vec3 u = Vec3::Zero();
     Mat3 a = Mat3::Zero();
-    visit_support(grid, e, 0, grid.n[2], tables, [&](std::size_t i, double wm, double wd, const Vec3& d) {
-      const Vec3 v(ux[i], uy[i], uz[i]);
-      u += v * wm;
-      a.noalias() += (v * wd) * d.transpose();
+    const double hx = grid.spacing.x();
+    visit_support(grid, e, 0, grid.n[2], tables, [&](const RowSegment& r) {
+      // Row sums of u w_m, u w_d and u w_d dx; dy and dz are constant along the row.
+      double um0 = 0, um1 = 0, um2 = 0, s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0, t2 = 0;
+      const double* px = ux + r.first;
+      const double* py = uy + r.first;
+      const double* pz = uz + r.first;
+      for (int i = 0; i < r.count; ++i) {
+        const double wm = r.yz_m * r.xm[i], wd = r.yz_d * r.xd[i], wdx = wd * (r.dx + i * hx);
+        um0 += px[i] * wm;
+        um1 += py[i] * wm;
+        um2 += pz[i] * wm;
+        s0 += px[i] * wd;
+        s1 += py[i] * wd;
+        s2 += pz[i] * wd;
+        t0 += px[i] * wdx;
+        t1 += py[i] * wdx;
+        t2 += pz[i] * wdx;
+      }
+      u += Vec3(um0, um1, um2);
+      const Vec3 s(s0, s1, s2);
+      a.col(0) += Vec3(t0, t1, t2);
+      a.col(1) += s * r.dy;
+      a.col(2) += s * r.dz;
     });
     // A_ij = sum u_i d_j Delta_D dV with d_j Delta_D = -d_j / sigma_D^2 Delta_D.
     if (want_u) velocities[p] = u * dv;

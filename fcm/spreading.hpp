@@ -45,7 +45,7 @@ void interpolate(const ShearedGrid& grid, std::span<const Envelope> envelopes, c
                  std::size_t stride, std::span<Vec3> velocities, std::span<Mat3> gradient_moments,
                  std::span<const std::uint32_t> order = {});
 
-// Particle indices sorted by the grid cell (z, then y, then x') of their centres.
+// Particle indices sorted by the grid block (8^3 nodes), then the grid node, of their centres.
 std::vector<std::uint32_t> grid_order(const ShearedGrid& grid, std::span<const Envelope> envelopes);
 
 }  // namespace suspend::fcm
