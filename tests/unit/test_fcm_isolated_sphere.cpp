@@ -89,3 +89,21 @@ TEST(FcmIsolatedSphere, TorqueRotationAndStrainStresslet) {
   EXPECT_LT(worst_rot, 0.01);
   EXPECT_LT(worst_strain, 0.01);
 }
+
+TEST(FcmBulkStress, ImposedShearPlusStressletsPlusHandedMoments) {
+  // Sigma = 2 eta E_inf + (1/V)(sum S + sum M): one rigid sphere in shear gives the dilute Einstein stresslet
+  // S_xy = (20/3) pi a^3 gammadot / 2, so Sigma_xy = gammadot (1 + 2.5 phi) to the lattice correction O(phi^2).
+  const double l = 16.0, vol = l * l * l, gd = 0.7;
+  Solver s(Vec3::Constant(l), {32, 32, 32}, fast_options());
+  const std::vector<Vec3> p{Vec3(5.2, 9.1, 3.3)};
+  const std::vector<double> r{1.0};
+  const MobilityResult res = s.solve({.positions = p, .radii = r, .shear_rate = gd});
+  const Mat3 sigma = s.bulk_stress(res, gd);
+  const double phi = 4.0 / 3.0 * pi / vol;
+  EXPECT_NEAR(sigma(0, 1) / gd, 1.0 + 2.5 * phi, 0.01 * 2.5 * phi);
+  EXPECT_NEAR(sigma(0, 0), res.stresslets[0](0, 0) / vol, 1e-15);
+  Mat3 m = Mat3::Zero();
+  m(1, 1) = -3.0;  // e.g. a compressive contact moment handed in by the caller
+  const std::vector<Mat3> moments{m};
+  EXPECT_NEAR((s.bulk_stress(res, gd, moments) - sigma - m / vol).norm(), 0.0, 1e-15);
+}
