@@ -3,6 +3,7 @@
 #include <fftw3.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <mutex>
 
 #include "core/error.hpp"
