@@ -55,6 +55,8 @@ static void BM_FcmStokesSolve(benchmark::State& state) {
   state.counters["fft_ms"] = t.fft * k;
   state.counters["green_ms"] = t.green * k;
   state.counters["interp_ms"] = t.interpolate * k;
+  // The acceptance target: whole solve / the bare FFTs inside it (same run, same machine load), at most 2.
+  state.counters["solve_over_fft"] = (t.spread + t.fft + t.green + t.interpolate) / t.fft;
 }
 BENCHMARK(BM_FcmStokesSolve)
     ->ArgsProduct({{64}, {10, 40}, {1, 2}})
