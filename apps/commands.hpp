@@ -7,4 +7,6 @@ void add_run_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 // `suspend pair`: two-sphere resistance functions of the lubrication model (apps/cmd_pair.cpp).
 void add_pair_command(CLI::App& app);
+// suspend mobility: FCM velocities, angular velocities and stresslets of spheres in a periodic box.
+void add_mobility_command(CLI::App& app);
 }  // namespace suspend::app

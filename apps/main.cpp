@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   suspend::app::add_run_command(app);
   suspend::app::add_check_command(app);
   suspend::app::add_pair_command(app);
+  suspend::app::add_mobility_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

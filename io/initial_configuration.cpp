@@ -48,7 +48,7 @@ Particles read_particle_table(const std::string& path) {
     p.position.emplace_back(x, y, z);
     p.radius.push_back(a);
   }
-  if (p.radius.size() < 2) throw InputError(path + ": needs at least two particles");
+  if (p.radius.empty()) throw InputError(path + ": holds no particles");
   const std::size_t n = p.radius.size();
   p.velocity.assign(n, Vec3::Zero());
   p.angular_velocity.assign(n, Vec3::Zero());
@@ -114,6 +114,7 @@ InitialConfiguration build_initial_configuration(const Case& c) {
     const std::string& f = c.particles.initial_file;
     const bool h5file = f.size() > 3 && (f.ends_with(".h5") || f.ends_with(".hdf5"));
     ic.particles = h5file ? read_particles_h5(f) : read_particle_table(f);
+    if (ic.particles.size() < 2) throw InputError("particles.initial.file: " + f + " holds fewer than two particles");
     const double vol = ic.particles.volume();
     ic.box = c.box ? Box(*c.box) : Box(Vec3::Constant(std::cbrt(vol / c.particles.phi)));
     for (Vec3& r : ic.particles.position) ic.box.wrap(r);

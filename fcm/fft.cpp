@@ -1,0 +1,74 @@
+#include "fcm/fft.hpp"
+
+#include <fftw3.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <mutex>
+
+#include "core/error.hpp"
+
+namespace suspend::fcm {
+namespace {
+// FFTW's planner is not thread-safe and fftw_init_threads must run once per process.
+std::mutex& planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+void init_threads_once() {
+  static const bool ok = fftw_init_threads() != 0;
+  if (!ok) throw NumericalError("fcm: fftw_init_threads failed");
+}
+}  // namespace
+
+VectorFft::VectorFft(std::array<int, 3> n, int threads, FftPlanning planning) : n_(n) {
+  for (int d = 0; d < 3; ++d)
+    if (n[d] < 2) throw InputError("fcm: grid size must be at least 2 in every direction");
+  real_size_ = static_cast<std::size_t>(n[0]) * n[1] * n[2];
+  complex_size_ = static_cast<std::size_t>(n[0] / 2 + 1) * n[1] * n[2];
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  init_threads_once();
+  real_ = fftw_alloc_real(3 * real_size_);
+  spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(3 * complex_size_));
+  if (real_ == nullptr || spectrum_ == nullptr) throw NumericalError("fcm: cannot allocate the FFT grid");
+  fftw_plan_with_nthreads(threads > 0 ? threads : omp_get_max_threads());
+  const int dims[3] = {n[2], n[1], n[0]};  // row-major, x fastest
+  const unsigned flags = planning == FftPlanning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
+  auto* c = reinterpret_cast<fftw_complex*>(spectrum_);
+  const int rdist = static_cast<int>(real_size_), cdist = static_cast<int>(complex_size_);
+  forward_plan_ = fftw_plan_many_dft_r2c(3, dims, 3, real_, nullptr, 1, rdist, c, nullptr, 1, cdist, flags);
+  inverse_plan_ = fftw_plan_many_dft_c2r(3, dims, 3, c, nullptr, 1, cdist, real_, nullptr, 1, rdist, flags);
+  if (forward_plan_ == nullptr || inverse_plan_ == nullptr) throw NumericalError("fcm: FFTW planning failed");
+  // Planning with FFTW_MEASURE overwrites the arrays.
+  std::fill(real_, real_ + 3 * real_size_, 0.0);
+}
+
+VectorFft::~VectorFft() {
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  if (forward_plan_ != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(forward_plan_));
+  if (inverse_plan_ != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(inverse_plan_));
+  fftw_free(real_);
+  fftw_free(spectrum_);
+}
+
+void VectorFft::forward(FftScaling scaling) {
+  fftw_execute(static_cast<fftw_plan>(forward_plan_));
+  if (scaling == FftScaling::inverse_size) {
+    const double s = 1.0 / static_cast<double>(real_size_);
+    const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(3 * complex_size_);
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t i = 0; i < m; ++i) spectrum_[i] *= s;
+  }
+}
+
+void VectorFft::inverse(FftScaling scaling) {
+  fftw_execute(static_cast<fftw_plan>(inverse_plan_));
+  if (scaling == FftScaling::inverse_size) {
+    const double s = 1.0 / static_cast<double>(real_size_);
+    const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(3 * real_size_);
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t i = 0; i < m; ++i) real_[i] *= s;
+  }
+}
+
+}  // namespace suspend::fcm

@@ -1,0 +1,99 @@
+// The FCM mobility solver: rigid spheres in a Lees-Edwards periodic box (DESIGN.md section 6; paper 004 section
+// II B; Maxey & Patel 2001, Lomholt & Maxey 2003, Yeo & Maxey 2010).
+//
+// Units: viscosity eta = 1, lengths in a_1 (smallest radius), so a force F moves an isolated sphere at
+// F / (6 pi a); time follows from the caller's forces and shear rate.
+// Flow convention: U_inf = (gammadot y, 0, 0), Omega_inf = (0, 0, -gammadot/2), E_inf,xy = E_inf,yx = gammadot/2.
+//
+// Given forces F and torques T on the particles, solve() returns
+//   U = U_inf(Y) + u'(F, T, S),   Omega = Omega_inf + omega'(F, T, S),
+// with the stresslets S chosen so every particle is rigid: E_inf + e'(F, T, S) = 0 (preconditioned conjugate
+// gradient on the 5 stresslet unknowns per particle, warm-started). u' is the periodic disturbance on the sheared
+// lattice with zero mean; the ambient velocity is evaluated at the y the caller passes (its own image).
+// The grid is regular in x' = x - gamma_t y (sheared_grid.hpp), gamma_t = D / L_y, D wrapped into [-L_x/2, L_x/2).
+#pragma once
+#include <array>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "fcm/disturbance.hpp"
+#include "fcm/fft.hpp"
+#include "fcm/sheared_grid.hpp"
+#include "fcm/spreading.hpp"
+
+namespace suspend::fcm {
+
+struct SolverOptions {
+  // Gaussians are cut off at this many monopole widths sigma_M (the dipole, narrower, at 1.24x as many of its
+  // own widths). 4.5 keeps the truncation bias below 1e-4 (docs/fcm.md).
+  double truncation_widths = 4.5;
+  bool rigid = true;                  // solve the stresslets (false: force- and torque-only FCM, S = 0)
+  double rigidity_tolerance = 1e-6;   // relative residual of the particle rate of strain
+  int max_rigidity_iterations = 200;
+  FftPlanning planning = FftPlanning::measure;
+  void validate() const;
+};
+
+struct MobilityProblem {
+  std::span<const Vec3> positions{};
+  std::span<const double> radii{};
+  std::span<const Vec3> forces{};         // on the particles (= on the fluid); empty means zero
+  std::span<const Vec3> torques{};        // empty means zero
+  double shear_rate = 0.0;                // gammadot
+  double shear_offset = 0.0;              // Lees-Edwards offset D (any value; wrapped internally)
+  std::span<const Mat3> stresslet_guess{};  // empty: the previous solution if the particle count matches
+};
+
+struct MobilityResult {
+  std::vector<Vec3> velocities;
+  std::vector<Vec3> angular_velocities;
+  std::vector<Mat3> stresslets;    // symmetric, traceless (zero when not rigid)
+  std::vector<Mat3> strain_rates;  // particle rate of strain incl. the ambient one (~0 when rigid)
+  int iterations = 0;              // conjugate-gradient iterations (each costs one Stokes solve)
+  double residual = 0.0;           // final relative residual of the rigidity condition
+};
+
+// Wall-clock seconds spent in each stage since construction or reset_timings().
+struct SolveTimings {
+  double spread = 0.0, fft = 0.0, green = 0.0, interpolate = 0.0;
+  int solves = 0;
+};
+
+class Solver {
+ public:
+  // grid = nodes per direction; FFTW plans are made here (with omp_get_max_threads() threads) and reused.
+  Solver(const Vec3& box_length, std::array<int, 3> grid, SolverOptions options = {});
+
+  MobilityResult solve(const MobilityProblem& problem);
+
+  // One Stokes solve without ambient flow or rigidity (any of the spans may be empty).
+  Disturbance apply(std::span<const Vec3> positions, std::span<const double> radii, std::span<const Vec3> forces,
+                    std::span<const Vec3> torques, std::span<const Mat3> stresslets, double shear_offset);
+
+  // Bulk stress 2 eta E_inf + (1/V) sum_n S_n + (1/V) sum of `moments` (e.g. the interparticle-force
+  // stresslets the caller accumulated), eta = 1 (Batchelor 1970; DESIGN.md section 6). Pressure not included.
+  Mat3 bulk_stress(const MobilityResult& result, double shear_rate, std::span<const Mat3> moments = {}) const;
+
+  const ShearedGrid& grid() const { return grid_; }
+  const SolverOptions& options() const { return options_; }
+  const SolveTimings& timings() const { return timings_; }
+  void reset_timings() { timings_ = {}; }
+
+ private:
+  void place(std::span<const Vec3> positions, std::span<const double> radii, double shear_offset);
+  // u' from the current envelopes and the given multipoles; writes the requested moments (spans may be empty).
+  void stokes_solve(std::span<const Vec3> forces, std::span<const Mat3> dipoles, std::span<Vec3> velocities,
+                    std::span<Mat3> gradient_moments);
+
+  SolverOptions options_;
+  ShearedGrid grid_;
+  std::unique_ptr<VectorFft> fft_;
+  std::vector<Envelope> envelopes_;
+  std::vector<std::uint32_t> order_;  // spatially sorted visiting order
+  std::vector<Mat3> last_stresslets_;
+  SolveTimings timings_;
+};
+
+}  // namespace suspend::fcm

@@ -1,0 +1,51 @@
+// Spreading of force monopoles and dipoles onto the grid, and its adjoint, interpolation (Lomholt & Maxey 2003,
+// eqs. 2.3-2.7; Yeo & Maxey 2010 section 2). For particle n with envelopes Delta_M, Delta_D (envelope.hpp):
+//   f_i(x) = F_i Delta_M(x - Y) + G_ij d/dx_j Delta_D(x - Y),   G = S + (1/2) eps . T  (G_ij = S_ij + eps_ijk T_k / 2)
+// Interpolation returns the adjoint moments, with dV the node volume:
+//   U_i = sum_x u_i Delta_M dV,   A_ij = sum_x u_i d/dx_j Delta_D dV  (= -<du_i/dx_j>_D),
+// so that <f, u> dV = F.U + G:A exactly (the discrete adjoint, to round-off). Then
+//   Omega_k = (1/2) eps_kij A_ij  and  E_ij = -(A_ij + A_ji) / 2,  hence F.U + G:A = F.U + T.Omega - S:E.
+// The Gaussians are evaluated in physical distance on the sheared lattice and truncated on a sphere of radius
+// `support` (a fixed number of monopole widths). Units: lengths in a_1.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "fcm/sheared_grid.hpp"
+
+namespace suspend::fcm {
+
+struct Envelope {
+  Vec3 centre = Vec3::Zero();
+  double sigma_m = 0.0;  // monopole width
+  double sigma_d = 0.0;  // dipole width
+  double support = 0.0;  // truncation radius
+};
+Envelope make_envelope(const Vec3& centre, double radius, double truncation_widths);
+
+// The dipole tensor G from a torque and a (symmetric) stresslet, and the angular velocity and rate of strain
+// from an interpolated gradient moment A.
+Mat3 dipole_tensor(const Vec3& torque, const Mat3& stresslet);
+Vec3 angular_velocity_of(const Mat3& gradient_moment);
+Mat3 strain_rate_of(const Mat3& gradient_moment);
+
+// Adds the force density of all particles to the field (component c at field + c * stride). `forces` or
+// `dipoles` may be empty (treated as zero). OpenMP-parallel: each thread owns a slab of z planes, so no two
+// threads write the same node. `order` (optional) is the order in which particles are visited: a spatially
+// sorted order (grid_order) keeps the touched grid rows in cache.
+void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::span<const Vec3> forces,
+            std::span<const Mat3> dipoles, double* field, std::size_t stride,
+            std::span<const std::uint32_t> order = {});
+
+// Interpolates the velocity field onto every particle (velocities and/or gradient moments may be empty).
+void interpolate(const ShearedGrid& grid, std::span<const Envelope> envelopes, const double* field,
+                 std::size_t stride, std::span<Vec3> velocities, std::span<Mat3> gradient_moments,
+                 std::span<const std::uint32_t> order = {});
+
+// Particle indices sorted by the grid block (8^3 nodes), then the grid node, of their centres.
+std::vector<std::uint32_t> grid_order(const ShearedGrid& grid, std::span<const Envelope> envelopes);
+
+}  // namespace suspend::fcm

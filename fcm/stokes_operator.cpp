@@ -1,0 +1,44 @@
+#include "fcm/stokes_operator.hpp"
+
+#include <complex>
+#include <numbers>
+
+namespace suspend::fcm {
+
+void apply_stokes_green(const ShearedGrid& grid, VectorFft& fft, double scale) {
+  const int nx = grid.n[0], ny = grid.n[1], nz = grid.n[2];
+  const int hx = nx / 2 + 1;
+  const double twopi = 2.0 * std::numbers::pi;
+  const double c1 = twopi / grid.length.x(), c2 = twopi / grid.length.y(), c3 = twopi / grid.length.z();
+  const double gt = grid.shear_fraction;
+  std::complex<double>* f1 = fft.spectrum(0).data();
+  std::complex<double>* f2 = fft.spectrum(1).data();
+  std::complex<double>* f3 = fft.spectrum(2).data();
+#pragma omp parallel for schedule(static)
+  for (int iz = 0; iz < nz; ++iz) {
+    const int m3 = iz <= nz / 2 ? iz : iz - nz;
+    const bool nyq3 = nz % 2 == 0 && iz == nz / 2;
+    for (int iy = 0; iy < ny; ++iy) {
+      const int m2 = iy <= ny / 2 ? iy : iy - ny;
+      const bool nyq2 = ny % 2 == 0 && iy == ny / 2;
+      const std::size_t row = (static_cast<std::size_t>(iz) * ny + iy) * hx;
+      for (int m1 = 0; m1 < hx; ++m1) {
+        const std::size_t i = row + m1;
+        const bool nyq1 = nx % 2 == 0 && m1 == nx / 2;
+        if ((m1 == 0 && m2 == 0 && m3 == 0) || nyq1 || nyq2 || nyq3) {
+          f1[i] = f2[i] = f3[i] = 0.0;
+          continue;
+        }
+        const double k1 = c1 * m1, k2 = c2 * m2 - gt * c1 * m1, k3 = c3 * m3;
+        const double k2sum = k1 * k1 + k2 * k2 + k3 * k3;
+        const std::complex<double> kf = (k1 * f1[i] + k2 * f2[i] + k3 * f3[i]) / k2sum;
+        const double g = scale / k2sum;
+        f1[i] = g * (f1[i] - k1 * kf);
+        f2[i] = g * (f2[i] - k2 * kf);
+        f3[i] = g * (f3[i] - k3 * kf);
+      }
+    }
+  }
+}
+
+}  // namespace suspend::fcm
