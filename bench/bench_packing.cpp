@@ -21,6 +21,7 @@ void pack(benchmark::State& state, std::size_t n, double ratio, double large_sha
   state.counters["phi"] = report.phi;
   state.counters["fire_steps"] = static_cast<double>(report.iterations);
   state.counters["retries"] = report.retries;
+  state.counters["rebuilds"] = report.neighbour_rebuilds;
 }
 
 void BM_RandomPacking(benchmark::State& state) { pack(state, 1000, 1.4, 0.5, state.range(0) / 100.0); }
