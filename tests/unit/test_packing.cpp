@@ -87,7 +87,7 @@ TEST(Packing, SameSeedSamePositionsOtherSeedOtherPositions) {
 TEST(Packing, BitIdenticalForAnyThreadCount) {
   // Above the OpenMP threshold of the force loop, so the parallel path is the one compared.
   const auto a = bidisperse(4200);
-  const Box box = cube_for_volume_fraction(a, 0.35);
+  const Box box = cube_for_volume_fraction(a, 0.25);
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
   const Packing serial = random_packing(a, box);
