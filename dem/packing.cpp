@@ -354,7 +354,7 @@ Packing random_packing(const std::vector<double>& radius, const Box& box, const 
 
   long budget = params.max_iterations;
   double phi_stage = std::min(params.phi_start, phi_target);
-  double phi_reached = 0.0;
+  double phi_reached = 0.0, phi_highest = 0.0;  // last and highest overlap-free stage
   while (true) {
     const double s = std::cbrt(phi_stage / phi_target);
     const bool final_stage = (phi_stage == phi_target);
@@ -370,6 +370,7 @@ Packing random_packing(const std::vector<double>& radius, const Box& box, const 
     budget -= stage_start - stage_budget;
     if (outcome == StageOutcome::converged) {
       phi_reached = phi_stage;
+      phi_highest = std::max(phi_highest, phi_stage);
       if (final_stage) break;
       phi_stage += params.growth * (phi_target - phi_stage);
       if (phi_target - phi_stage < snap_to_target) phi_stage = phi_target;
@@ -384,7 +385,7 @@ Packing random_packing(const std::vector<double>& radius, const Box& box, const 
       throw InputError("packing: volume fraction " + format_phi(phi_target) +
                        " is unreachable for this box and particle count (" + why + " after " +
                        std::to_string(out.report.retries) + " retries; highest reached without overlap: " +
-                       format_phi(phi_reached) + "); lower phi or use a wider size distribution");
+                       format_phi(phi_highest) + "); lower phi or use a wider size distribution");
     }
     ++out.report.retries;
     phi_stage = std::max(std::min(params.phi_start, phi_target), phi_reached - retry_backoff);
