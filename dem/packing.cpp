@@ -40,7 +40,7 @@ struct Fire {
 constexpr double jammed_force_ratio = 1e-7;
 // Reductions are summed in blocks of this many particles, then block by block in order: the result does not
 // depend on the thread count.
-constexpr std::size_t reduction_block = 2048;
+constexpr std::size_t reduction_block = 256;
 // Intermediate stages stop at this largest overlap (units of the scaled smallest radius).
 constexpr double intermediate_overlap = 1e-3;
 // A stage closer than this to the target volume fraction is replaced by the final stage.
@@ -84,44 +84,32 @@ class SoftSphereRelaxation {
     double dt = fire.dt_start, alpha = fire.alpha_start;
     int n_positive = 0;
     std::fill(v_.begin(), v_.end(), Vec3::Zero());
-    const std::size_t n = x_.size();
-    const bool par = n > parallel_threshold;
+    double displacement = max_displacement();
     while (true) {
-      if (max_displacement() + growth_ > 0.5 * skin_) {
+      if (displacement + growth_ > 0.5 * skin_) {
         adapt_skin();
         rebuild();
       }
-      const auto [max_overlap, max_force] = compute_forces();
-      if (max_overlap < tol) return StageOutcome::converged;
-      if (max_force < jammed_force_ratio * max_overlap) return StageOutcome::jammed;
+      const Evaluation e = evaluate();
+      if (e.max_overlap < tol) return StageOutcome::converged;
+      if (e.max_force < jammed_force_ratio * e.max_overlap) return StageOutcome::jammed;
       if (budget <= 0) return StageOutcome::out_of_iterations;
       --budget;
       ++iterations_;
 
-      const auto [power, vv, ff] = fire_sums();
-      if (power > 0.0) {
-        const double mix = ff > 0.0 ? alpha * std::sqrt(vv / ff) : 0.0;
-#pragma omp parallel for schedule(static) if (par)
-        for (std::size_t i = 0; i < n; ++i) v_[i] = (1.0 - alpha) * v_[i] + mix * f_[i];
-        if (++n_positive > fire.n_delay) {
-          dt = std::min(dt * fire.f_inc, fire.dt_max);
-          alpha *= fire.f_alpha;
-        }
-      } else {
+      // FIRE: downhill, mix the velocity towards the force; uphill, step back half a step and stop.
+      const bool uphill = !(e.power > 0.0);
+      const double keep = uphill ? 0.0 : 1.0 - alpha;
+      const double mix = (uphill || e.ff == 0.0) ? 0.0 : alpha * std::sqrt(e.vv / e.ff);
+      if (uphill) {
         n_positive = 0;
         dt = std::max(dt * fire.f_dec, fire.dt_min);
         alpha = fire.alpha_start;
-#pragma omp parallel for schedule(static) if (par)
-        for (std::size_t i = 0; i < n; ++i) {
-          x_[i] -= 0.5 * dt * v_[i];
-          v_[i].setZero();
-        }
+      } else if (++n_positive > fire.n_delay) {
+        dt = std::min(dt * fire.f_inc, fire.dt_max);
+        alpha *= fire.f_alpha;
       }
-#pragma omp parallel for schedule(static) if (par)
-      for (std::size_t i = 0; i < n; ++i) {
-        v_[i] += dt * f_[i];
-        x_[i] += dt * v_[i];
-      }
+      displacement = step(uphill ? 0.5 * dt : 0.0, keep, mix, dt);
     }
   }
 
@@ -217,58 +205,73 @@ class SoftSphereRelaxation {
     return std::sqrt(d2);
   }
 
-  // F_i = sum_j delta_ij n_ji, the force of E = sum (1/2) delta^2; returns the largest overlap and net force.
-  std::array<double, 2> compute_forces() {
+  struct Evaluation {
+    double max_overlap, max_force;  // largest pair overlap and net force
+    double power, vv, ff;           // F.v, v.v, F.F
+  };
+
+  // F_i = sum_j delta_ij n_ji, the force of E = sum (1/2) delta^2, with the FIRE sums taken in fixed blocks.
+  Evaluation evaluate() {
     double max_overlap = 0.0, max_force2 = 0.0;
     const std::size_t n = x_.size();
-#pragma omp parallel for schedule(static) reduction(max : max_overlap, max_force2) if (n > parallel_threshold)
-    for (std::size_t i = 0; i < n; ++i) {
-      Vec3 force = Vec3::Zero();
-      const Vec3 xi = x_[i];
-      const double ai = a_[i];
-      for (std::uint32_t k = start_[i]; k < start_[i + 1]; ++k) {
-        const std::uint32_t j = neighbour_[k];
-        Vec3 d = x_[j] - xi;
-        for (int c = 0; c < 3; ++c) {  // one image shift suffices: positions stay within a skin of the cell
-          if (d[c] > half_length_[c])
-            d[c] -= length_[c];
-          else if (d[c] < -half_length_[c])
-            d[c] += length_[c];
-        }
-        const double contact = ai + a_[j];
-        const double r2 = d.squaredNorm();
-        if (r2 >= contact * contact) continue;
-        const double r = std::sqrt(r2);
-        const double overlap = contact - r;
-        force -= (overlap / r) * d;
-        max_overlap = std::max(max_overlap, overlap);
-      }
-      f_[i] = force;
-      max_force2 = std::max(max_force2, force.squaredNorm());
-    }
-    return {max_overlap, std::sqrt(max_force2)};
-  }
-
-  // (F.v, v.v, F.F) summed in fixed blocks.
-  std::array<double, 3> fire_sums() {
-    const std::size_t n = x_.size();
     const std::size_t blocks = partial_.size() / 3;
-#pragma omp parallel for schedule(static) if (n > parallel_threshold)
+#pragma omp parallel for schedule(static) reduction(max : max_overlap, max_force2) if (n > parallel_threshold)
     for (std::size_t b = 0; b < blocks; ++b) {
-      double p = 0.0, vv = 0.0, ff = 0.0;
+      double power = 0.0, vv = 0.0, ff = 0.0;
       for (std::size_t i = b * reduction_block; i < std::min(n, (b + 1) * reduction_block); ++i) {
-        p += f_[i].dot(v_[i]);
+        Vec3 force = Vec3::Zero();
+        const Vec3 xi = x_[i];
+        const double ai = a_[i];
+        for (std::uint32_t k = start_[i]; k < start_[i + 1]; ++k) {
+          const std::uint32_t j = neighbour_[k];
+          Vec3 d = x_[j] - xi;
+          for (int c = 0; c < 3; ++c) {  // one image shift suffices: positions stay within a skin of the cell
+            if (d[c] > half_length_[c])
+              d[c] -= length_[c];
+            else if (d[c] < -half_length_[c])
+              d[c] += length_[c];
+          }
+          const double contact = ai + a_[j];
+          const double r2 = d.squaredNorm();
+          if (r2 >= contact * contact) continue;
+          const double r = std::sqrt(r2);
+          const double overlap = contact - r;
+          force -= (overlap / r) * d;
+          max_overlap = std::max(max_overlap, overlap);
+        }
+        f_[i] = force;
+        max_force2 = std::max(max_force2, force.squaredNorm());
+        power += force.dot(v_[i]);
         vv += v_[i].squaredNorm();
-        ff += f_[i].squaredNorm();
+        ff += force.squaredNorm();
       }
-      partial_[3 * b] = p;
+      partial_[3 * b] = power;
       partial_[3 * b + 1] = vv;
       partial_[3 * b + 2] = ff;
     }
-    std::array<double, 3> sum{0.0, 0.0, 0.0};
-    for (std::size_t b = 0; b < blocks; ++b)
-      for (int c = 0; c < 3; ++c) sum[c] += partial_[3 * b + c];
-    return sum;
+    Evaluation e{max_overlap, std::sqrt(max_force2), 0.0, 0.0, 0.0};
+    for (std::size_t b = 0; b < blocks; ++b) {
+      e.power += partial_[3 * b];
+      e.vv += partial_[3 * b + 1];
+      e.ff += partial_[3 * b + 2];
+    }
+    return e;
+  }
+
+  // x -= back v; v = keep v + mix F; then semi-implicit Euler v += dt F, x += dt v. Returns the largest
+  // displacement since the list was built.
+  double step(double back, double keep, double mix, double dt) {
+    double d2 = 0.0;
+    const std::size_t n = x_.size();
+#pragma omp parallel for schedule(static) reduction(max : d2) if (n > parallel_threshold)
+    for (std::size_t i = 0; i < n; ++i) {
+      x_[i] -= back * v_[i];
+      v_[i] = keep * v_[i] + mix * f_[i];
+      v_[i] += dt * f_[i];
+      x_[i] += dt * v_[i];
+      d2 = std::max(d2, (x_[i] - x_ref_[i]).squaredNorm());
+    }
+    return std::sqrt(d2);
   }
 
   Box box_;
@@ -351,7 +354,7 @@ Packing random_packing(const std::vector<double>& radius, const Box& box, const 
 
   long budget = params.max_iterations;
   double phi_stage = std::min(params.phi_start, phi_target);
-  double phi_reached = 0.0;
+  double phi_reached = 0.0, phi_highest = 0.0;  // last and highest overlap-free stage
   while (true) {
     const double s = std::cbrt(phi_stage / phi_target);
     const bool final_stage = (phi_stage == phi_target);
@@ -367,6 +370,7 @@ Packing random_packing(const std::vector<double>& radius, const Box& box, const 
     budget -= stage_start - stage_budget;
     if (outcome == StageOutcome::converged) {
       phi_reached = phi_stage;
+      phi_highest = std::max(phi_highest, phi_stage);
       if (final_stage) break;
       phi_stage += params.growth * (phi_target - phi_stage);
       if (phi_target - phi_stage < snap_to_target) phi_stage = phi_target;
@@ -381,7 +385,7 @@ Packing random_packing(const std::vector<double>& radius, const Box& box, const 
       throw InputError("packing: volume fraction " + format_phi(phi_target) +
                        " is unreachable for this box and particle count (" + why + " after " +
                        std::to_string(out.report.retries) + " retries; highest reached without overlap: " +
-                       format_phi(phi_reached) + "); lower phi or use a wider size distribution");
+                       format_phi(phi_highest) + "); lower phi or use a wider size distribution");
     }
     ++out.report.retries;
     phi_stage = std::max(std::min(params.phi_start, phi_target), phi_reached - retry_backoff);

@@ -3,9 +3,10 @@
 //
 // Algorithm (docs/packing.md): random centres, radii scaled by s < 1, then s is grown towards 1 and the overlaps are
 // removed at each stage by minimising the harmonic soft-sphere energy E = sum_pairs (1/2) delta_ij^2,
-// delta_ij = s (a_i + a_j) - |r_ij| > 0 (O'Hern et al., PRE 68, 011306 (2003), eq. 1 with eps = sigma = 1), with FIRE
-// (Bitzek et al., PRL 97, 170201 (2006)). The final stage works with radii a_i (1 + margin) + min_gap / 2, so that
-// an overlap left below margin * a_min still leaves every true surface gap >= min_gap.
+// delta_ij = s (a_i + a_j) - |r_ij| > 0 (the harmonic soft spheres of O'Hern et al., PRE 68, 011306 (2003), with
+// energy scale delta^2 instead of (delta / sigma)^2), with FIRE (Bitzek et al., PRL 97, 170201 (2006)). The final stage works with radii a_i (1 + margin) + min_gap / 2, so that
+// an overlap left below margin * a_min still leaves every true surface gap >= min_gap. Positions are never rescaled:
+// the reached phi is the target. A stage that jams short of the target is retried after expanding and shaking.
 // Deterministic: the same seed gives bit-identical positions for any thread count (per-particle force gather,
 // fixed-block reductions).
 #pragma once

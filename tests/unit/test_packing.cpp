@@ -35,7 +35,7 @@ double exact_volume_fraction(const std::vector<double>& a, const Box& box) {
 }  // namespace
 
 TEST(Packing, DenseBidisperseHasNoOverlapAndTheTargetVolumeFraction) {
-  const auto a = bidisperse(400);
+  const auto a = bidisperse(300);
   const Box box = cube_for_volume_fraction(a, 0.60);
   PackingParams params;
   params.seed = 3;
@@ -67,7 +67,7 @@ TEST(Packing, UserMinimumGapIsRespectedInAnElongatedBox) {
 }
 
 TEST(Packing, SameSeedSamePositionsOtherSeedOtherPositions) {
-  const auto a = bidisperse(300);
+  const auto a = bidisperse(200);
   const Box box = cube_for_volume_fraction(a, 0.55);
   PackingParams params;
   params.seed = 11;
@@ -87,11 +87,11 @@ TEST(Packing, SameSeedSamePositionsOtherSeedOtherPositions) {
 TEST(Packing, BitIdenticalForAnyThreadCount) {
   // Above the OpenMP threshold of the force loop, so the parallel path is the one compared.
   const auto a = bidisperse(4200);
-  const Box box = cube_for_volume_fraction(a, 0.35);
+  const Box box = cube_for_volume_fraction(a, 0.25);
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
   const Packing serial = random_packing(a, box);
-  omp_set_num_threads(3);
+  omp_set_num_threads(2);
   const Packing parallel = random_packing(a, box);
   omp_set_num_threads(threads);
   ASSERT_EQ(serial.position.size(), parallel.position.size());
@@ -99,7 +99,7 @@ TEST(Packing, BitIdenticalForAnyThreadCount) {
 }
 
 TEST(Packing, UnreachableVolumeFractionIsAnInputErrorNamingTheHighestReached) {
-  const auto a = bidisperse(200);
+  const auto a = bidisperse(120);
   const Box box = cube_for_volume_fraction(a, 0.80);
   PackingParams params;
   params.max_retries = 1;

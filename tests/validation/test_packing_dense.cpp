@@ -1,5 +1,6 @@
 // Dense packings at the sizes runs use: N = 1000 equal-volume bidisperse (size ratio 1.4) spheres at phi = 0.60 and
-// at phi = 0.64, close to random close packing of this mixture (about 0.648, O'Hern et al., PRE 68, 011306 (2003)).
+// at phi = 0.64, close to random close packing of size-ratio-1.4 bidisperse spheres (0.648 for equal numbers,
+// O'Hern et al., PRE 68, 011306 (2003)).
 // Checked by brute force over all pairs; the generation time is printed.
 #include <gtest/gtest.h>
 
