@@ -89,6 +89,21 @@ void ContactHistory::release(std::uint32_t i, std::uint32_t j) {
 
 void ContactHistory::clear() { std::fill(count_.begin(), count_.end(), 0u); }
 
+std::vector<ContactHistory::Entry> ContactHistory::entries() const {
+  std::vector<Entry> out;
+  for (std::uint32_t row = 0; row < count_.size(); ++row)
+    for (std::uint32_t s = 0; s < count_[row]; ++s) {
+      const Slot& slot = slots_[row * capacity_ + s];
+      out.push_back({row, slot.partner, slot.history});
+    }
+  return out;
+}
+
+void ContactHistory::restore(const std::vector<Entry>& entries) {
+  clear();
+  for (const Entry& e : entries) store(e.i, e.j, e.history);
+}
+
 void ContactHistory::gather(std::span<const NeighbourPair> pairs, std::span<PairHistory> out) const {
   if (out.size() != pairs.size()) throw InputError("contact history: gather needs one history per pair");
   for (std::size_t k = 0; k < pairs.size(); ++k) out[k] = lookup(pairs[k].i, pairs[k].j);

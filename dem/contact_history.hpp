@@ -45,6 +45,14 @@ class ContactHistory {
   void release(std::uint32_t i, std::uint32_t j);
   void clear();
 
+  // Every stored pair, in row order (checkpoints), and the inverse: restore(entries()) reproduces the store.
+  struct Entry {
+    std::uint32_t i, j;  // i < j
+    PairHistory history;
+  };
+  std::vector<Entry> entries() const;
+  void restore(const std::vector<Entry>& entries);
+
   void gather(std::span<const NeighbourPair> pairs, std::span<PairHistory> out) const;
   void scatter(std::span<const NeighbourPair> pairs, std::span<const PairHistory> in);
 

@@ -14,6 +14,7 @@
 #include "core/particles.hpp"
 #include "core/stress.hpp"
 #include "dem/contact/pair_geometry.hpp"
+#include "dem/contact/pair_history.hpp"
 #include "dem/neighbour_search.hpp"
 
 namespace suspend {
@@ -36,13 +37,18 @@ struct PairSums {
 void compact_active_pairs(const std::vector<NeighbourPair>& list, const Particles& p, const Box& box,
                           double interaction_gap, std::vector<ActivePair>& active);
 
-// Evaluates law(geometry) -> PairForce on every active pair and accumulates into sums. `local` is per-thread
-// scratch kept by the caller so that steps do not allocate.
+// Evaluates law(geometry, motion, dt, history[k]) -> PairForce on every active pair and accumulates into sums;
+// the force on j of each pair goes to pair_force[k] (snapshots). velocity/omega are the particle velocities the
+// contact laws see (the last step's); the image of j moves at u_j - y_images gammadot L_y x (Lees-Edwards).
+// `local` is per-thread scratch kept by the caller so that steps do not allocate.
 template <class Law>
-void accumulate_pair_forces(const std::vector<ActivePair>& active, std::size_t n_particles, const Law& law,
-                            PairSums& sums, std::vector<PairSums>& local) {
+void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particles& p, double image_velocity,
+                            const Law& law, double dt, std::vector<PairHistory>& history, PairSums& sums,
+                            std::vector<Vec3>& pair_force, std::vector<PairSums>& local) {
+  const std::size_t n_particles = p.size();
   const int nthreads = omp_get_max_threads();
   local.resize(nthreads);
+  pair_force.resize(active.size());
 #pragma omp parallel num_threads(nthreads)
   {
     const int t = omp_get_thread_num();
@@ -56,8 +62,11 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, std::size_t n
     const std::size_t begin = np * t / nthreads, end = np * (t + 1) / nthreads;
     for (std::size_t k = begin; k < end; ++k) {
       const ActivePair& pr = active[k];
-      const PairForce f = law(pr.geometry);
+      const RelativeMotion m{p.velocity[pr.i], p.velocity[pr.j] - Vec3(pr.y_images * image_velocity, 0.0, 0.0),
+                             p.angular_velocity[pr.i], p.angular_velocity[pr.j]};
+      const PairForce f = law(pr.geometry, m, dt, history[k]);
       const Vec3 fj = f.total_on_j();
+      pair_force[k] = fj;
       mine.force[pr.j] += fj;
       mine.force[pr.i] -= fj;
       mine.torque[pr.i] += f.torque_i;

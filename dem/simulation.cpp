@@ -18,15 +18,27 @@ void TimeStepParams::validate() const {
 }
 
 void SimulationParams::validate() const {
-  contact.validate();
+  suspend::validate(contact);
   time_step.validate();
   if (!(max_overlap > 0.0)) throw InputError("run.max_overlap must be > 0");
 }
 
 PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, const SimulationParams& params)
-    : state_(std::move(state)), box_(box), params_(params), law_{params.contact}, list_(0.0, params.skin) {
+    : state_(std::move(state)), box_(box), params_(params), range_(interaction_range(params.contact)),
+      list_(interaction_range(params.contact), params.skin) {
   params_.validate();
   box_.set_strain(state_.strain);
+  const Particles& p = state_.particles;
+  const auto [a_min, a_max] = std::minmax_element(p.radius.begin(), p.radius.end());
+  history_ = ContactHistory(p.size(), ContactHistory::capacity_for(*a_min, *a_max));
+  history_.restore(state_.contacts);
+  state_.contacts.clear();
+}
+
+SimulationState PairwiseSimulation::state_with_contacts() const {
+  SimulationState s = state_;
+  s.contacts = history_.entries();
+  return s;
 }
 
 void PairwiseSimulation::fail(const std::string& what) const {
@@ -39,8 +51,16 @@ void PairwiseSimulation::evaluate() {
   Particles& p = state_.particles;
   const std::size_t n = p.size();
   list_.update(p.position, p.radius, box_);
-  compact_active_pairs(list_.pairs(), p, box_, 0.0, active_);
-  accumulate_pair_forces(active_, n, law_, sums_, scratch_);
+  compact_active_pairs(list_.pairs(), p, box_, range_, active_);
+  active_index_.resize(active_.size());
+  for (std::size_t k = 0; k < active_.size(); ++k) active_index_[k] = {active_[k].i, active_[k].j};
+  pair_history_.resize(active_.size());
+  history_.gather(active_index_, pair_history_);
+  const double image_velocity = params_.shear_rate * box_.length().y();
+  with_law(params_.contact, [&](const auto& law) {
+    accumulate_pair_forces(active_, p, image_velocity, law, state_.last_dt, pair_history_, sums_, pair_force_,
+                           scratch_);
+  });
 
   const double a_min = *std::min_element(p.radius.begin(), p.radius.end());
   if (sums_.max_overlap > params_.max_overlap * a_min) {
@@ -82,13 +102,14 @@ void PairwiseSimulation::evaluate() {
   } else {
     dt_ = params_.time_step.max;
     if (max_speed > 0.0) dt_ = std::min(dt_, params_.time_step.max_displacement / max_speed);
-    dt_ = std::min(dt_, params_.time_step.stability * 6.0 * pi * a_min / params_.contact.kn);
+    dt_ = std::min(dt_, params_.time_step.stability * 6.0 * pi * a_min / stiffness_scale(params_.contact));
   }
   evaluated_ = true;
 }
 
 void PairwiseSimulation::advance() {
   if (!evaluated_) evaluate();
+  history_.scatter(active_index_, pair_history_);
   Particles& p = state_.particles;
   const std::size_t n = p.size();
   nonaffine_.resize(n);
@@ -100,6 +121,7 @@ void PairwiseSimulation::advance() {
   const double dstrain = params_.shear_rate * dt_;
   state_.strain += dstrain;
   state_.time += dt_;
+  state_.last_dt = dt_;
   ++state_.step;
   box_.set_strain(state_.strain);
   for (std::size_t i = 0; i < n; ++i) {
@@ -108,13 +130,6 @@ void PairwiseSimulation::advance() {
   }
   list_.record_motion(nonaffine_, dstrain);
   evaluated_ = false;
-}
-
-std::vector<Vec3> PairwiseSimulation::pair_forces() const {
-  std::vector<Vec3> f;
-  f.reserve(active_.size());
-  for (const ActivePair& pr : active_) f.push_back(law_(pr.geometry).total_on_j());
-  return f;
 }
 
 }  // namespace suspend

@@ -1,6 +1,7 @@
 // The pairwise engine's simulation: particles in simple shear under Lees-Edwards boundaries, overdamped.
 // Each particle feels Stokes drag against the imposed flow (paper 000, eq. A.1 for a linear flow: the Faxen
-// terms vanish) and the contact law; with zero inertia the force balance gives
+// terms vanish) and the contact law (any law of the shared contact module, with its pair history); with zero
+// inertia the force balance gives
 //   U_i = U_inf(r_i) + F_i / (6 pi eta a_i),   Omega_i = Omega_inf + T_i / (8 pi eta a_i^3).
 // Bulk stress (paper 000, eqs. 8-9), in units of eta_0 gammadot_ref:
 //   Sigma = 2 eta E_inf + (1/V) [ sum_i (20/3) pi eta a_i^3 E_inf  +  sum_pairs -sym(d F_j^T) ],
@@ -18,7 +19,8 @@
 #include "core/box.hpp"
 #include "core/particles.hpp"
 #include "core/stress.hpp"
-#include "dem/contact/soft_repulsion.hpp"
+#include "dem/contact/contact_law.hpp"
+#include "dem/contact_history.hpp"
 #include "dem/pair_forces.hpp"
 #include "dem/verlet_list.hpp"
 
@@ -36,7 +38,7 @@ struct TimeStepParams {
 
 struct SimulationParams {
   double shear_rate = 1.0;  // gammadot / gammadot_ref
-  SoftRepulsionParams contact;
+  ContactLaw contact = ComposedLaw<SoftRepulsion>{};
   TimeStepParams time_step;
   double max_overlap = 0.1;  // stop if any overlap exceeds this fraction of the smaller radius
   double skin = 0.4;         // neighbour-list skin (a_1)
@@ -49,6 +51,9 @@ struct SimulationState {
   double time = 0.0;
   double strain = 0.0;
   std::int64_t step = 0;
+  double last_dt = 0.0;  // time step of the last advance: frictional springs integrate the last velocities over it
+  // Stored contact histories (tangential and rolling stretch) of the pairs in contact.
+  std::vector<ContactHistory::Entry> contacts;
 };
 
 class PairwiseSimulation {
@@ -60,6 +65,8 @@ class PairwiseSimulation {
   // Moves particles by the velocities of the last evaluate() over its time step; wraps; updates strain and time.
   void advance();
 
+  // The state, with the contact histories copied in (for checkpoints).
+  SimulationState state_with_contacts() const;
   const SimulationState& state() const { return state_; }
   const Box& box() const { return box_; }
   const SimulationParams& params() const { return params_; }
@@ -71,7 +78,7 @@ class PairwiseSimulation {
   const std::vector<ActivePair>& active_pairs() const { return active_; }
   const VerletList& neighbours() const { return list_; }
   // Force on j of each active pair (same order as active_pairs()), for snapshots.
-  std::vector<Vec3> pair_forces() const;
+  const std::vector<Vec3>& pair_forces() const { return pair_force_; }
 
  private:
   Vec3 ambient_velocity(const Vec3& r) const { return {params_.shear_rate * r.y(), 0.0, 0.0}; }
@@ -80,9 +87,13 @@ class PairwiseSimulation {
   SimulationState state_;
   Box box_;
   SimulationParams params_;
-  SoftRepulsion law_;
+  double range_ = 0.0;  // largest gap at which a pair interacts
   VerletList list_;
+  ContactHistory history_;
   std::vector<ActivePair> active_;
+  std::vector<NeighbourPair> active_index_;
+  std::vector<PairHistory> pair_history_;
+  std::vector<Vec3> pair_force_;
   PairSums sums_;
   std::vector<PairSums> scratch_;
   std::vector<Vec3> nonaffine_;

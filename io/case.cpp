@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "io/contact_case.hpp"
 #include "io/schema_reader.hpp"
 #include "io/units.hpp"
 
@@ -100,12 +101,7 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     c.hydrodynamics = h.choice("model", "pairwise", {"pairwise"});
     h.finish();
   }
-  {
-    SchemaReader k = top.child("contact");
-    c.contact_law = k.choice("law", "soft_repulsion", {"soft_repulsion"});
-    c.simulation.contact.kn = stiffness_from_k_hat(k.number("k_hat", 1.0e4, Range::positive()));
-    k.finish();
-  }
+  c.simulation.contact = read_contact(top.child("contact"));
   {
     SchemaReader r = top.child("run");
     c.run.strain = r.number("strain", c.run.strain, Range::positive());
@@ -183,8 +179,7 @@ YAML::Node to_yaml(const Case& c) {
   n["flow"]["type"] = c.flow;
   n["flow"]["shear_rate"] = number_node(c.simulation.shear_rate);
   n["hydrodynamics"]["model"] = c.hydrodynamics;
-  n["contact"]["law"] = c.contact_law;
-  n["contact"]["k_hat"] = number_node(k_hat_from_stiffness(c.simulation.contact.kn));
+  n["contact"] = contact_to_yaml(c.simulation.contact);
   YAML::Node r = n["run"];
   r["strain"] = number_node(c.run.strain);
   r["average_from"] = number_node(c.run.average_from);

@@ -45,7 +45,6 @@ struct Case {
   std::optional<Vec3> box;  // given box, else derived from count and phi
   std::string flow = "simple_shear";
   std::string hydrodynamics = "pairwise";
-  std::string contact_law = "soft_repulsion";
   SimulationParams simulation;
   RunCase run;
 };

@@ -48,6 +48,17 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
     h5::set_attribute(id, ".", "step", c.state.step);
     h5::set_attribute(id, ".", "time", c.state.time);
     h5::set_attribute(id, ".", "strain", c.state.strain);
+    h5::set_attribute(id, ".", "last_dt", c.state.last_dt);
+    const auto& contacts = c.state.contacts;
+    std::vector<std::int64_t> pairs;
+    std::vector<double> stretch;
+    for (const auto& e : contacts) {
+      pairs.insert(pairs.end(), {e.i, e.j});
+      for (int a = 0; a < 3; ++a) stretch.push_back(e.history.tangential_stretch[a]);
+      for (int a = 0; a < 3; ++a) stretch.push_back(e.history.rolling_stretch[a]);
+    }
+    h5::write(id, "contacts/pairs", pairs, {contacts.size(), 2});
+    h5::write(id, "contacts/stretch", stretch, {contacts.size(), 6});
     h5::set_attribute(id, ".", "next_series", c.clock.next_series);
     h5::set_attribute(id, ".", "next_snapshot", c.clock.next_snapshot);
     h5::set_attribute(id, ".", "next_checkpoint", c.clock.next_checkpoint);
@@ -73,12 +84,13 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     c.state.step = h5::int_attribute(id, ".", "step");
     c.state.time = h5::double_attribute(id, ".", "time");
     c.state.strain = h5::double_attribute(id, ".", "strain");
+    c.state.last_dt = h5::double_attribute(id, ".", "last_dt");
     c.clock.next_series = h5::double_attribute(id, ".", "next_series");
     c.clock.next_snapshot = h5::double_attribute(id, ".", "next_snapshot");
     c.clock.next_checkpoint = h5::double_attribute(id, ".", "next_checkpoint");
     c.clock.series_rows = h5::int_attribute(id, ".", "series_rows");
     c.clock.snapshots = h5::int_attribute(id, ".", "snapshots");
-    for (double v : {c.state.time, c.state.strain, c.clock.next_series, c.clock.next_snapshot, c.clock.next_checkpoint})
+    for (double v : {c.state.time, c.state.strain, c.state.last_dt, c.clock.next_series, c.clock.next_snapshot, c.clock.next_checkpoint})
       if (!std::isfinite(v)) throw InputError(path + ": time, strain or output clock is not finite");
     Particles& p = c.state.particles;
     p.radius = h5::read_doubles(id, "particles/radius");
@@ -92,6 +104,21 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     const std::vector<std::int64_t> species = h5::read_ints(id, "particles/species");
     if (species.size() != n) throw InputError(path + ": particles/species has the wrong size");
     p.species.assign(species.begin(), species.end());
+    const std::vector<std::int64_t> pairs = h5::read_ints(id, "contacts/pairs");
+    const std::vector<double> stretch = h5::read_doubles(id, "contacts/stretch");
+    if (stretch.size() != 3 * pairs.size()) throw InputError(path + ": contacts/stretch does not match contacts/pairs");
+    for (std::size_t k = 0; k < pairs.size() / 2; ++k) {
+      const std::int64_t i = pairs[2 * k], j = pairs[2 * k + 1];
+      if (i < 0 || j <= i || static_cast<std::size_t>(j) >= n)
+        throw InputError(path + ": contact " + std::to_string(k) + " names particles outside the run");
+      ContactHistory::Entry e{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j), {}};
+      e.history.tangential_stretch = Vec3(stretch[6 * k], stretch[6 * k + 1], stretch[6 * k + 2]);
+      e.history.rolling_stretch = Vec3(stretch[6 * k + 3], stretch[6 * k + 4], stretch[6 * k + 5]);
+      e.history.in_contact = true;
+      if (!e.history.tangential_stretch.allFinite() || !e.history.rolling_stretch.allFinite())
+        throw InputError(path + ": contact " + std::to_string(k) + " has a non-finite stretch");
+      c.state.contacts.push_back(e);
+    }
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {

@@ -42,7 +42,7 @@ Snapshot snapshot_of(const PairwiseSimulation& sim) {
   s.strain = st.strain;
   s.box = sim.box();
   s.particles = &st.particles;
-  const std::vector<Vec3> f = sim.pair_forces();
+  const std::vector<Vec3>& f = sim.pair_forces();
   const auto& pairs = sim.active_pairs();
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     s.contact_pairs.push_back(pairs[k].i);
@@ -132,7 +132,7 @@ int run_case(const Case& c, const RunOptions& o) {
     file.flush();
     clock.series_rows = static_cast<std::int64_t>(file.series_rows());
     clock.snapshots = static_cast<std::int64_t>(file.snapshot_count());
-    write_checkpoint(checkpoint_path, {sim.state(), clock, fingerprint, serialize(rng), threads});
+    write_checkpoint(checkpoint_path, {sim.state_with_contacts(), clock, fingerprint, serialize(rng), threads});
   };
   auto finish_outputs = [&] {
     file.flush();

@@ -8,6 +8,8 @@
 // no per-pair dispatch (STYLE.md habit 6).
 #pragma once
 #include <algorithm>
+#include <cmath>
+#include <type_traits>
 #include <cstddef>
 #include <utility>
 #include <variant>
@@ -57,6 +59,22 @@ inline void validate(const ContactLaw& law) {
 }
 inline double interaction_range(const ContactLaw& law) {
   return std::visit([](const auto& l) { return l.range(); }, law);
+}
+
+// A linear stiffness scale of the law (eta_0 gammadot a_1): the explicit time step must resolve 6 pi eta a / k.
+// Hertz: dF/d delta = (3/2) k_n sqrt(delta) at the largest compression h_r, stiffened by the supplementary wall.
+inline double stiffness_scale(const ContactLaw& law) {
+  return std::visit(
+      [](const auto& l) -> double {
+        const auto& c = l.contact;
+        if constexpr (std::is_same_v<std::decay_t<decltype(c)>, HertzAdhesive>) {
+          const HertzAdhesiveParams& p = c.params();
+          return 1.5 * p.kn * std::sqrt(p.roughness) * (1.0 + p.repulsion_stiffness * std::sqrt(p.repulsion_onset));
+        } else {
+          return c.p.kn;
+        }
+      },
+      law);
 }
 
 // Calls fn(concrete_law) once: a driver templated on the law writes its pair loop inside fn.

@@ -28,6 +28,12 @@ namespace {
 const std::string suspend_bin = SUSPEND_BINARY_DIR "/bin/suspend";
 const std::string restart_case = SUSPEND_SOURCE_DIR "/tests/data/restart_case.yaml";
 
+// Per-process scratch space: several builds (Release, sanitizers) may run this test at the same time.
+std::string scratch() {
+  const std::string d = ::testing::TempDir() + "/suspend_cli_" + std::to_string(getpid());
+  fs::create_directories(d);
+  return d;
+}
 pid_t spawn(std::vector<std::string> args, const std::string& err_file) {
   args.insert(args.begin(), suspend_bin);
   std::vector<char*> argv;
@@ -52,7 +58,7 @@ struct Result {
   std::string err;
 };
 Result run(const std::vector<std::string>& args) {
-  const std::string err_file = ::testing::TempDir() + "/suspend_stderr.txt";
+  const std::string err_file = scratch() + "/stderr.txt";
   const int code = wait_exit(spawn(args, err_file));
   std::ifstream in(err_file);
   std::stringstream s;
@@ -60,12 +66,12 @@ Result run(const std::vector<std::string>& args) {
   return {code, s.str()};
 }
 std::string fresh_dir(const std::string& name) {
-  const std::string d = ::testing::TempDir() + "/" + name;
+  const std::string d = scratch() + "/" + name;
   fs::remove_all(d);
   return d;
 }
 std::string write_case(const std::string& name, const std::string& text) {
-  const std::string p = ::testing::TempDir() + "/" + name;
+  const std::string p = scratch() + "/" + name;
   std::ofstream(p) << text;
   return p;
 }
@@ -179,6 +185,6 @@ TEST(Cli, InterruptWritesACheckpointAndStopsCleanly) {
 TEST(Cli, RestartFromAnotherCaseIsRefused) {
   const std::string c = fresh_dir("other_case");
   ASSERT_EQ(run({"run", restart_case, "--out", c, "--quiet", "--set", "run.strain=0.05", "--set", "run.average_from=0"}).code, 0);
-  expect_input_error({"run", restart_case, "--restart", c + "/checkpoint.h5", "--set", "contact.k_hat=2000"},
+  expect_input_error({"run", restart_case, "--restart", c + "/checkpoint.h5", "--set", "contact.mu=0.5"},
                      "belongs to another case", "");
 }

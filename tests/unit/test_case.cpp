@@ -1,6 +1,8 @@
 // Case validation: every kind of bad input gives one clear InputError naming the key, the value and what is allowed.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -72,7 +74,9 @@ TEST(Case, OutOfRangeNamesTheAllowedInterval) {
 
 TEST(Case, ChoiceListsAllowedWords) {
   const std::string e = error_of(base, {"contact.law=soft_repulsio"});
-  EXPECT_NE(e.find("contact.law: 'soft_repulsio' is not allowed (one of: soft_repulsion)"), std::string::npos) << e;
+  EXPECT_NE(e.find("contact.law: 'soft_repulsio' is not allowed (one of: soft_repulsion, linear_spring, hertz_adhesive)"),
+            std::string::npos)
+      << e;
   EXPECT_NE(e.find("did you mean 'soft_repulsion'"), std::string::npos) << e;
 }
 
@@ -138,7 +142,7 @@ TEST(Case, UnreachableVolumeFractionForTheBox) {
 }
 
 TEST(Case, ParticleTableFileErrorsNameTheLine) {
-  const std::string path = ::testing::TempDir() + "/bad_table.txt";
+  const std::string path = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_bad_table.txt";
   std::ofstream(path) << "# x y z a\n1 2 3 1\n4 5 six 1\n";
   try {
     read_particle_table(path);
@@ -146,4 +150,46 @@ TEST(Case, ParticleTableFileErrorsNameTheLine) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("bad_table.txt:3"), std::string::npos) << e.what();
   }
+}
+
+TEST(CaseContact, PaperGroupsBecomeHertzAdhesiveParameters) {
+  YAML::Node root = YAML::Load(base);
+  apply_override(root, "contact={law: hertz_adhesive, gamma_bar: 0.5, g_adh: 1.8, mu_s: 0.3}");
+  const Case c = parse_case(root, "");
+  const auto& law = std::get<ComposedLaw<HertzAdhesive>>(c.simulation.contact);
+  const HertzAdhesiveParams& p = law.contact.params();
+  // Paper 004 eq. 17: Gamma-bar = 6 pi eta a^2 gammadot / (k_n (eps_bar h_r)^(3/2)); G_adh = F_adh / (6 pi eta a^2 gammadot).
+  EXPECT_NEAR(p.kn, 6.0 * M_PI / (0.5 * std::pow(0.05 * 0.005, 1.5)), 1e-6 * p.kn);
+  EXPECT_NEAR(p.f_adh, 6.0 * M_PI * 1.8, 1e-12);
+  EXPECT_DOUBLE_EQ(p.mu_s, 0.3);
+  EXPECT_DOUBLE_EQ(p.roughness, 5e-3);
+  // The resolved case prints the groups back.
+  const YAML::Node y = to_yaml(c);
+  EXPECT_NEAR(y["contact"]["gamma_bar"].as<double>(), 0.5, 1e-12);
+  EXPECT_NEAR(y["contact"]["g_adh"].as<double>(), 1.8, 1e-12);
+}
+
+TEST(CaseContact, LinearSpringVariantsAndSurfaceForces) {
+  YAML::Node root = YAML::Load(base);
+  apply_override(root, "contact={law: linear_spring, k_hat: 2.0e4, friction: critical_load, mu: 0.8, critical_load: 3,"
+                       " rolling: {mu_r: 0.05}, repulsion: {force: 1, debye_length: 0.02},"
+                       " attraction: {hamaker: 6.3e-5}}");
+  const Case c = parse_case(root, "");
+  const auto& law = std::get<ComposedLaw<LinearSpringCriticalLoadRolling>>(c.simulation.contact);
+  EXPECT_DOUBLE_EQ(law.contact.p.kn, 2.0e4);
+  EXPECT_DOUBLE_EQ(law.contact.p.kt, 2.0 / 7.0 * 2.0e4);  // paper 000 table 1 ratio by default
+  EXPECT_DOUBLE_EQ(law.contact.friction.p.critical_load, 3.0);
+  EXPECT_DOUBLE_EQ(law.contact.rolling.p.kr, 2.0e2);  // k_n / 100
+  ASSERT_TRUE(law.surface.repulsion && law.surface.attraction);
+  EXPECT_DOUBLE_EQ(law.surface.attraction->p.hamaker, 6.3e-5);
+  EXPECT_NEAR(interaction_range(c.simulation.contact), 20 * 0.02 > 4.0 ? 0.4 : 4.0, 1e-12);
+  // Round trip through the resolved YAML gives the same case.
+  EXPECT_EQ(to_yaml_text(parse_case(YAML::Load(to_yaml_text(c)), "")), to_yaml_text(c));
+}
+
+TEST(CaseContact, KeysOfAnotherLawAreUnknown) {
+  const std::string e = error_of(base, {"contact={law: linear_spring, mu_s: 0.5}"});
+  EXPECT_NE(e.find("contact.mu_s: unknown key; did you mean 'mu'?"), std::string::npos) << e;
+  EXPECT_NE(error_of(base, {"contact={law: linear_spring, friction: none, mu: 0.5}"}).find("contact.mu: must be 0"),
+            std::string::npos);
 }

@@ -1,5 +1,6 @@
 // run.h5 round trip, truncation on restart, checkpoint round trip and refusal, and the XDMF references.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -38,7 +39,7 @@ SeriesRow row(int k) {
   return r;
 }
 std::string temp(const std::string& name) {
-  const std::string p = ::testing::TempDir() + "/" + name;
+  const std::string p = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_" + name;
   std::filesystem::remove(p);
   return p;
 }

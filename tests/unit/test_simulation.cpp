@@ -43,7 +43,7 @@ TEST(Simulation, OverlappingPairSeparatesAtTheStokesVelocity) {
   params.shear_rate = 1.0;
   PairwiseSimulation sim(st, box, params);
   sim.evaluate();
-  const double f = params.contact.kn * overlap;  // along z, pushing 1 away from 0
+  const double f = std::get<ComposedLaw<SoftRepulsion>>(params.contact).contact.p.kn * overlap;  // along z, pushing 1 away from 0
   EXPECT_NEAR(sim.state().particles.velocity[1].z(), f / (6 * pi), 1e-12);
   EXPECT_NEAR(sim.state().particles.velocity[0].z(), -f / (6 * pi), 1e-12);
   // Pair virial: -d F_j / V with d = 2 - overlap along z gives a positive pressure.
@@ -68,7 +68,7 @@ TEST(Simulation, ParticleCrossingTheShearedFaceIsRemapped) {
   const Vec3 r0 = sim.state().particles.position[0];
   const Vec3 u0 = sim.state().particles.velocity[0];
   EXPECT_NEAR(u0.x(), 2.0 * 9.999, 1e-12);
-  EXPECT_NEAR(u0.y(), params.contact.kn * overlap / (6 * pi), 1e-9);
+  EXPECT_NEAR(u0.y(), std::get<ComposedLaw<SoftRepulsion>>(params.contact).contact.p.kn * overlap / (6 * pi), 1e-9);
   sim.advance();
   const double offset = std::remainder((0.23 + 2.0 * 0.01) * 10.0, 10.0);
   EXPECT_NEAR(sim.box().shear_offset(), offset, 1e-12);

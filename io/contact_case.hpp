@@ -1,0 +1,15 @@
+// The `contact` section of a case -> the composed contact law (docs/cases.md, docs/contact.md). The papers'
+// groups (k-hat, Gamma-bar, G_adh, gamma-hat) are accepted as the papers define them and converted here.
+#pragma once
+#include <yaml-cpp/yaml.h>
+
+#include "dem/contact/contact_law.hpp"
+#include "io/schema_reader.hpp"
+
+namespace suspend::io {
+
+ContactLaw read_contact(SchemaReader r);
+YAML::Node contact_to_yaml(const ContactLaw& law);
+std::string contact_law_name(const ContactLaw& law);
+
+}  // namespace suspend::io
