@@ -1,5 +1,6 @@
 #include "dem/integrate/block_matrix.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "core/error.hpp"
@@ -29,6 +30,16 @@ void SymmetricBlockMatrix::set_structure(std::size_t n, const std::vector<BlockL
   }
   for (std::size_t r = n; r > 0; --r) row_start_[r] = row_start_[r - 1];
   row_start_[0] = 0;
+  row_split_.resize(n);
+  for (std::size_t r = 0; r < n; ++r) {
+    RowEntry* begin = entries_.data() + row_start_[r];
+    RowEntry* end = entries_.data() + row_start_[r + 1];
+    std::sort(begin, end, [](const RowEntry& a, const RowEntry& b) {
+      return a.column != b.column ? a.column < b.column : a.link < b.link;
+    });
+    row_split_[r] = static_cast<std::uint32_t>(
+        std::partition_point(begin, end, [r](const RowEntry& e) { return e.column < r; }) - entries_.data());
+  }
 }
 
 void SymmetricBlockMatrix::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
@@ -37,13 +48,7 @@ void SymmetricBlockMatrix::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y
 #pragma omp parallel for schedule(static) if (n > 512)
   for (std::ptrdiff_t r = 0; r < n; ++r) {
     Vector6 acc = diagonal_[r] * x.segment<6>(6 * r);
-    for (const RowEntry* e = row_begin(r); e != row_end(r); ++e) {
-      const auto xc = x.segment<6>(6 * static_cast<std::ptrdiff_t>(e->column));
-      if (e->transposed)
-        acc.noalias() += coupling_[e->link].transpose() * xc;
-      else
-        acc.noalias() += coupling_[e->link] * xc;
-    }
+    for (const RowEntry* e = row_begin(r); e != row_end(r); ++e) acc += apply(*e, x);
     y.segment<6>(6 * r) = acc;
   }
 }

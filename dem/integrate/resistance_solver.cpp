@@ -126,9 +126,9 @@ void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species
   out.iterations = 0;
   bool converged = true;
   if (params_.solver == LinearSolver::conjugate_gradient) {
-    cg_.set_preconditioner(matrix_);
+    cg_.prepare(matrix_);
     const ConjugateGradientReport report =
-        cg_.solve(matrix_, rhs_, previous_, params_.tolerance, params_.max_iterations);
+        cg_.solve(matrix_, rhs_, previous_, params_.tolerance, params_.max_iterations, params_.preconditioner);
     out.iterations = report.iterations;
     out.residual = report.residual;
     converged = report.converged;

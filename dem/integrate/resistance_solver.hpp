@@ -22,8 +22,8 @@
 // Units: eta_0 = 1, lengths in a_1, velocities in gammadot a_1, forces eta_0 gammadot a_1^2, torques and stresses
 // eta_0 gammadot a_1^3.
 //
-// Solver: block-Jacobi preconditioned conjugate gradient warm-started from the previous solution (default), or
-// sparse Cholesky keeping the symbolic analysis while the pair pattern is unchanged. Deterministic: the result
+// Solver: preconditioned conjugate gradient (symmetric block Gauss-Seidel by default, or block Jacobi; see
+// conjugate_gradient.hpp) warm-started from the previous solution (default), or sparse Cholesky keeping the symbolic analysis while the pair pattern is unchanged. Deterministic: the result
 // depends only on the inputs (and, for the warm start, the previous call), not on the thread count.
 // Workspaces are kept between calls: no allocation per step once the largest pair count has been seen.
 #pragma once
@@ -47,6 +47,7 @@ enum class LubricationStress { force_dipole, stresslet };
 
 struct ResistanceSolverParams {
   LinearSolver solver = LinearSolver::conjugate_gradient;
+  Preconditioner preconditioner = Preconditioner::symmetric_gauss_seidel;  // of the conjugate gradient
   double tolerance = 1e-8;    // relative residual |b - R dV| / |b| at which CG stops
   int max_iterations = 5000;  // CG iterations before NumericalError
   bool warm_start = true;     // start CG from the previous solution
@@ -115,7 +116,7 @@ class ResistanceSolver {
 
   SymmetricBlockMatrix matrix_;
   Eigen::VectorXd rhs_, previous_, check_;
-  BlockJacobiConjugateGradient cg_;
+  PreconditionedConjugateGradient cg_;
   PatternCholesky cholesky_;
   std::vector<Mat3> pair_stress_;
 };
