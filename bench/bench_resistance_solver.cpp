@@ -4,6 +4,8 @@
 //   cold:     CG from zero;
 //   warm:     CG from the solution of the previous step (particles advanced by dt = 1/1400 with the solved
 //             velocities, the pair list kept, as between two neighbour-list rebuilds);
+//   warm block Jacobi: the same with the block-Jacobi preconditioner instead of symmetric Gauss-Seidel;
+//   assembly and stress: a solve whose warm start is already the solution (0 iterations);
 //   cholesky: sparse Cholesky with the symbolic analysis reused (same pattern), and with a fresh analysis.
 // Usage: build/bin/bench_resistance_solver [--benchmark_filter=...]
 #include <benchmark/benchmark.h>
@@ -104,6 +106,32 @@ void BM_ConjugateGradientWarm(benchmark::State& state) {
   report(state, c, out);
 }
 
+void BM_ConjugateGradientWarmBlockJacobi(benchmark::State& state) {
+  const Configuration& c = configuration(static_cast<std::size_t>(state.range(0)));
+  ResistanceSolverParams params;
+  params.preconditioner = Preconditioner::block_jacobi;
+  ResistanceSolver solver(c.species_radius, params);
+  SolveResult out;
+  for (auto _ : state) {
+    state.PauseTiming();
+    solver.solve(c.previous.p, c.previous.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+    state.ResumeTiming();
+    solver.solve(c.current.p, c.current.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+  }
+  report(state, c, out);
+}
+
+// Everything but the iterations: assembly, preconditioner set-up, one residual, velocities and stress (the warm
+// start is already the solution).
+void BM_AssemblyAndStress(benchmark::State& state) {
+  const Configuration& c = configuration(static_cast<std::size_t>(state.range(0)));
+  ResistanceSolver solver(c.species_radius, {});
+  SolveResult out;
+  solver.solve(c.current.p, c.current.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+  report(state, c, out);
+}
+
 void BM_CholeskyPatternReused(benchmark::State& state) {
   const Configuration& c = configuration(static_cast<std::size_t>(state.range(0)));
   ResistanceSolverParams params;
@@ -148,6 +176,8 @@ void BM_MatrixVectorProduct(benchmark::State& state) {
 BENCHMARK(BM_MatrixVectorProduct)->Arg(500)->Arg(4000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ConjugateGradientCold)->Arg(500)->Arg(4000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ConjugateGradientWarm)->Arg(500)->Arg(4000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ConjugateGradientWarmBlockJacobi)->Arg(500)->Arg(4000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AssemblyAndStress)->Arg(500)->Arg(4000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CholeskyPatternReused)->Arg(500)->Arg(4000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CholeskyFreshAnalysis)->Arg(500)->Arg(4000)->Unit(benchmark::kMillisecond);
 
