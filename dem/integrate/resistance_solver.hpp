@@ -28,6 +28,7 @@
 // Workspaces are kept between calls: no allocation per step once the largest pair count has been seen.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <string_view>
 #include <vector>
 
