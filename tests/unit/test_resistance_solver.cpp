@@ -4,6 +4,7 @@
 // spheres in straining flow, Lees-Edwards images, and the solver's own consistency (CG = Cholesky, force balance
 // checked with the pair law directly, warm start, pattern reuse, failure).
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <cmath>
 #include <fstream>
@@ -534,4 +535,48 @@ TEST(ResistanceSolver, LeesEdwardsPairMatchesTheSamePairInsideTheBox) {
     EXPECT_LT((a.angular_velocity[k] - b.angular_velocity[k]).norm(), 1e-10 * b.angular_velocity[k].norm());
   EXPECT_LT((a.stress[Contribution::lubrication] - b.stress[Contribution::lubrication]).norm(),
             1e-10 * b.stress[Contribution::lubrication].norm());
+}
+
+// Above 512 particles the row loops run on several threads: the result must not depend on how many.
+TEST(ResistanceSolver, ResultIsBitIdenticalForAnyThreadCount) {
+  // A jittered simple cubic lattice of 9 x 8 x 8 spheres (a = 1, spacing 2.2): 576 > 512 block rows.
+  Dense d;
+  d.box = Box(9 * 2.2, 8 * 2.2, 8 * 2.2);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+  std::normal_distribution<double> g;
+  std::vector<Vec3> x;
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 8; ++j)
+      for (int k = 0; k < 8; ++k) x.emplace_back(2.2 * i + jitter(rng), 2.2 * j + jitter(rng), 2.2 * k + jitter(rng));
+  for (Vec3& xi : x) d.box.wrap(xi);
+  d.p = make_particles(x, std::vector<int>(x.size(), 0), d.radii);
+  std::vector<NeighbourPair> list;
+  CellListSearch search;
+  search.find_pairs(d.p.position, d.p.radius, d.box, 0.3, list);
+  compact_active_pairs(list, d.p, d.box, 0.3, d.pairs);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    d.force.emplace_back(g(rng), g(rng), g(rng));
+    d.torque.emplace_back(g(rng), g(rng), g(rng));
+  }
+  ASSERT_GT(d.pairs.size(), 1000u);
+  const hydro::SimpleShear flow(1.0);
+  {  // block Jacobi: every threaded loop (the Gauss-Seidel path uses a subset of them)
+    ResistanceSolverParams params;
+    params.preconditioner = Preconditioner::block_jacobi;
+    std::vector<SolveResult> out(2);
+    const int threads[2] = {1, 2};
+    for (int k = 0; k < 2; ++k) {
+      omp_set_num_threads(threads[k]);
+      ResistanceSolver solver(d.radii, params);
+      solver.solve(d.p, d.pairs, flow, d.force, d.torque, out[k]);
+    }
+    omp_set_num_threads(omp_get_num_procs());
+    EXPECT_EQ(out[0].iterations, out[1].iterations);
+    for (std::size_t i = 0; i < d.p.size(); ++i) {
+      EXPECT_EQ(out[0].velocity[i], out[1].velocity[i]) << i;
+      EXPECT_EQ(out[0].angular_velocity[i], out[1].angular_velocity[i]) << i;
+    }
+    EXPECT_EQ(out[0].stress[Contribution::lubrication], out[1].stress[Contribution::lubrication]);
+  }
 }
