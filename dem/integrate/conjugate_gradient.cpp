@@ -1,0 +1,196 @@
+#include "dem/integrate/conjugate_gradient.hpp"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace suspend {
+namespace {
+constexpr std::ptrdiff_t chunk = 6 * 64;  // scalars per partial sum
+constexpr std::ptrdiff_t parallel_threshold = 6 * 512;
+
+using Entry = SymmetricBlockMatrix::RowEntry;
+
+// acc -= B x_column for the block B of a row entry (stored block or its transpose).
+inline void subtract(const Entry& e, const std::vector<Matrix6>& blocks, const Eigen::VectorXd& x, Vector6& acc) {
+  const auto xc = x.segment<6>(6 * static_cast<Eigen::Index>(e.column));
+  if (e.transposed)
+    acc.noalias() -= blocks[e.link].transpose() * xc;
+  else
+    acc.noalias() -= blocks[e.link] * xc;
+}
+}  // namespace
+
+void PreconditionedConjugateGradient::prepare(const SymmetricBlockMatrix& a) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.block_rows());
+  factor_inverse_.resize(n);
+  bool spd = true;
+#pragma omp parallel for schedule(static) if (6 * n > parallel_threshold) reduction(&& : spd)
+  for (std::ptrdiff_t r = 0; r < n; ++r) {
+    const Eigen::LLT<Matrix6> llt(a.diagonal()[r]);
+    spd = spd && llt.info() == Eigen::Success;
+    factor_inverse_[r] = llt.matrixL().solve(Matrix6::Identity());  // L_i^-1
+  }
+  if (!spd) throw NumericalError("resistance solve: a diagonal 6x6 block is not positive definite");
+  const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(a.links());
+  scaled_.resize(nl);
+#pragma omp parallel for schedule(static) if (nl > 512)
+  for (std::ptrdiff_t k = 0; k < nl; ++k) {
+    const BlockLink& l = a.link_list()[k];
+    scaled_[k].noalias() = factor_inverse_[l.i] * a.coupling()[k] * factor_inverse_[l.j].transpose();
+  }
+}
+
+void PreconditionedConjugateGradient::multiply(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v,
+                                               Eigen::VectorXd& y) const {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.block_rows());
+#pragma omp parallel for schedule(static) if (6 * n > parallel_threshold)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    Vector6 s = v.segment<6>(6 * i);
+    Vector6 off = Vector6::Zero();
+    for (const Entry* e = a.row_begin(i); e != a.row_end(i); ++e) subtract(*e, scaled_, v, off);
+    y.segment<6>(6 * i) = s - off;
+  }
+}
+
+// y_i = v_i - sum_{j<i} A'_ij y_j, i ascending.
+void PreconditionedConjugateGradient::forward(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v,
+                                              Eigen::VectorXd& y) const {
+  const std::size_t n = a.block_rows();
+  for (std::size_t i = 0; i < n; ++i) {
+    Vector6 s = v.segment<6>(6 * i);
+    for (const Entry* e = a.row_begin(i); e != a.row_diagonal(i); ++e) subtract(*e, scaled_, y, s);
+    y.segment<6>(6 * i) = s;
+  }
+}
+
+// y_i = v_i - sum_{j>i} A'_ij y_j, i descending.
+void PreconditionedConjugateGradient::backward(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v,
+                                               Eigen::VectorXd& y) const {
+  for (std::size_t i = a.block_rows(); i-- > 0;) {
+    Vector6 s = v.segment<6>(6 * i);
+    for (const Entry* e = a.row_diagonal(i); e != a.row_end(i); ++e) subtract(*e, scaled_, y, s);
+    y.segment<6>(6 * i) = s;
+  }
+}
+
+void PreconditionedConjugateGradient::scale(const Eigen::VectorXd& r, Eigen::VectorXd& y) const {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(factor_inverse_.size());
+  for (std::ptrdiff_t i = 0; i < n; ++i) y.segment<6>(6 * i).noalias() = factor_inverse_[i] * r.segment<6>(6 * i);
+}
+
+void PreconditionedConjugateGradient::unscale(const Eigen::VectorXd& u, Eigen::VectorXd& y) const {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(factor_inverse_.size());
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    y.segment<6>(6 * i).noalias() = factor_inverse_[i].transpose() * u.segment<6>(6 * i);
+}
+
+double PreconditionedConjugateGradient::dot(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
+  const std::ptrdiff_t size = u.size();
+  const std::ptrdiff_t chunks = (size + chunk - 1) / chunk;
+  chunk_sums_.resize(chunks);
+#pragma omp parallel for schedule(static) if (size > parallel_threshold)
+  for (std::ptrdiff_t c = 0; c < chunks; ++c) {
+    const std::ptrdiff_t begin = c * chunk, len = std::min(chunk, size - begin);
+    chunk_sums_[c] = u.segment(begin, len).dot(v.segment(begin, len));
+  }
+  double s = 0.0;
+  for (double c : chunk_sums_) s += c;
+  return s;
+}
+
+ConjugateGradientReport PreconditionedConjugateGradient::solve(const SymmetricBlockMatrix& a,
+                                                               const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                                                               double tolerance, int max_iterations,
+                                                               Preconditioner kind) {
+  const std::ptrdiff_t size = b.size();
+  for (Eigen::VectorXd* v : {&r_, &rho_, &u_, &p_, &q_, &t_, &w_, &candidate_}) v->resize(size);
+  if (x.size() != size) x = Eigen::VectorXd::Zero(size);
+  ConjugateGradientReport report;
+  report.converged = true;
+  const double b_norm = std::sqrt(dot(b, b));
+  if (b_norm == 0.0) {
+    x.setZero();
+    return report;
+  }
+  const bool ssor = kind == Preconditioner::symmetric_gauss_seidel;
+  // True residual of the guess; a guess worse than zero (e.g. after a jump in the forcing) is dropped.
+  a.multiply(x, q_);
+  r_ = b - q_;
+  double true_norm = std::sqrt(dot(r_, r_));
+  if (true_norm > b_norm) {
+    x.setZero();
+    r_ = b;
+    true_norm = b_norm;
+  }
+  report.residual = true_norm / b_norm;
+  if (true_norm <= tolerance * b_norm) return report;
+
+  // Correction d = S^T u (Jacobi) or S^T K'^-T u (Gauss-Seidel); CG residual rho = S r or K'^-1 S r.
+  scale(r_, ssor ? w_ : rho_);
+  if (ssor) forward(a, w_, rho_);
+  u_.setZero();
+  p_ = rho_;
+  double rr = dot(rho_, rho_);
+  double target = std::sqrt(rr) * tolerance * b_norm / true_norm;  // assumes |rho| proportional to |r|
+  int k = 0;
+  bool checked = true;
+  while (k < max_iterations) {
+    if (ssor) {  // q = t + K'^-1 (p - t), t = K'^-T p
+      backward(a, p_, t_);
+      w_ = p_ - t_;
+      forward(a, w_, q_);
+      q_ += t_;
+    } else {
+      multiply(a, p_, q_);
+    }
+    const double pq = dot(p_, q_);
+    if (!(pq > 0.0)) break;  // breakdown: not SPD or not finite
+    const double alpha = rr / pq;
+    u_.noalias() += alpha * p_;
+    rho_.noalias() -= alpha * q_;
+    const double rr_new = dot(rho_, rho_);
+    p_ = rho_ + (rr_new / rr) * p_;
+    rr = rr_new;
+    ++k;
+    checked = false;
+    if (std::sqrt(rr) <= target || k == max_iterations) {
+      // Candidate x + d and its true residual.
+      if (ssor) {
+        backward(a, u_, w_);
+        unscale(w_, t_);
+      } else {
+        unscale(u_, t_);
+      }
+      candidate_ = x + t_;
+      a.multiply(candidate_, q_);
+      w_ = b - q_;
+      const double r_norm = std::sqrt(dot(w_, w_));
+      checked = true;
+      true_norm = r_norm;
+      if (!std::isfinite(r_norm) || r_norm <= tolerance * b_norm) break;
+      target = 0.5 * std::sqrt(rr) * tolerance * b_norm / r_norm;
+    }
+  }
+  if (!checked) {  // breakdown before a check: report the last iterate honestly
+    if (ssor) {
+      backward(a, u_, w_);
+      unscale(w_, t_);
+    } else {
+      unscale(u_, t_);
+    }
+    candidate_ = x + t_;
+    a.multiply(candidate_, q_);
+    w_ = b - q_;
+    true_norm = std::sqrt(dot(w_, w_));
+  }
+  if (k > 0) x = candidate_;
+  report.iterations = k;
+  report.residual = true_norm / b_norm;
+  report.converged = std::isfinite(report.residual) && true_norm <= tolerance * b_norm;
+  return report;
+}
+
+}  // namespace suspend

@@ -1,0 +1,207 @@
+// Assembly, solve and stress of the overdamped resistance problem; equations and conventions in the header.
+#include "dem/integrate/resistance_solver.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "core/error.hpp"
+#include "dem/hydro/stokes_drag.hpp"
+
+namespace suspend {
+
+void ResistanceSolverParams::validate() const {
+  if (!(tolerance > 0.0 && tolerance < 1.0))
+    throw InputError("hydrodynamics.solver.tolerance = " + std::to_string(tolerance) + " must be in (0, 1)");
+  if (max_iterations < 1)
+    throw InputError("hydrodynamics.solver.max_iterations = " + std::to_string(max_iterations) + " must be >= 1");
+  lubrication.validate();
+}
+
+ResistanceSolver::ResistanceSolver(std::vector<double> species_radius, const ResistanceSolverParams& params)
+    : species_radius_(std::move(species_radius)), params_(params) {
+  params_.validate();
+  if (species_radius_.empty()) throw InputError("resistance solver: at least one species radius is needed");
+  laws_.reserve(species_radius_.size() * species_radius_.size());
+  for (double a_i : species_radius_)
+    for (double a_j : species_radius_) laws_.emplace_back(a_i, a_j, params_.lubrication);
+}
+
+void ResistanceSolver::solve(const Particles& p, const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
+                             const std::vector<Vec3>& force, const std::vector<Vec3>& torque, SolveResult& out,
+                             std::string_view context) {
+  solve(p, p.species, pairs, flow, force, torque, out, context);
+}
+
+void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& species,
+                                const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
+                                const std::vector<Vec3>& force, const std::vector<Vec3>& torque) {
+  const std::size_t n = p.size();
+  const bool keep_inactive = params_.solver == LinearSolver::cholesky;  // stable pattern for the analysis
+
+  // Links: pairs that get a block, in list order.
+  links_.clear();
+  link_pair_.clear();
+  lubricated_ = 0;
+  pair_link_.resize(pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const ActivePair& pr = pairs[k];
+    const bool active = law(species[pr.i], species[pr.j]).active(pr.geometry.gap());
+    lubricated_ += active ? 1 : 0;
+    if (active || keep_inactive) {
+      pair_link_[k] = static_cast<std::int32_t>(links_.size());
+      links_.push_back({pr.i, pr.j});
+      link_pair_.push_back(static_cast<std::uint32_t>(k));
+    } else {
+      pair_link_[k] = -1;
+    }
+  }
+  matrix_.set_structure(n, links_);
+  const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(links_.size());
+  self_i_.resize(nl);
+  self_j_.resize(nl);
+  strain_.resize(nl);
+
+  // Pair blocks (R_lub is zero beyond the outer cutoff): each link writes only its own slots.
+#pragma omp parallel for schedule(static) if (nl > 256)
+  for (std::ptrdiff_t l = 0; l < nl; ++l) {
+    const ActivePair& pr = pairs[link_pair_[l]];
+    const hydro::PairLubrication& lub = law(species[pr.i], species[pr.j]);
+    const double gap = pr.geometry.gap();
+    const hydro::Matrix12 r = lub.resistance(pr.geometry.n, gap);
+    self_i_[l] = r.block<6, 6>(0, 0);
+    self_j_[l] = r.block<6, 6>(6, 6);
+    matrix_.coupling()[l] = r.block<6, 6>(0, 6);
+    strain_[l] = lub.strain_forces(pr.geometry.n, gap, flow.strain_rate(p.position[pr.i]),
+                                   flow.strain_rate(p.position[pr.j]));
+  }
+
+  // Block rows: Stokes drag + the pair self blocks; right-hand side F_nh + Faxen + strain forces, summed in link
+  // order within each row.
+  rhs_.resize(6 * static_cast<Eigen::Index>(n));
+  const std::ptrdiff_t nn = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(static) if (nn > 512)
+  for (std::ptrdiff_t i = 0; i < nn; ++i) {
+    const double a = p.radius[i];
+    const hydro::StokesResistance s = hydro::stokes_resistance(a);
+    Matrix6& d = matrix_.diagonal()[i];
+    d.setZero();
+    d.diagonal() << s.translation, s.translation, s.translation, s.rotation, s.rotation, s.rotation;
+    Vector6 b;
+    b << force[i] + s.translation * (a * a / 6.0) * flow.velocity_laplacian(p.position[i]), torque[i];
+    for (const auto* e = matrix_.row_begin(i); e != matrix_.row_end(i); ++e) {
+      if (e->transposed) {  // this particle is the link's j
+        d += self_j_[e->link];
+        b += strain_[e->link].segment<6>(6);
+      } else {
+        d += self_i_[e->link];
+        b += strain_[e->link].segment<6>(0);
+      }
+    }
+    rhs_.segment<6>(6 * i) = b;
+  }
+}
+
+void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
+                             const hydro::WavyShear& flow, const std::vector<Vec3>& force,
+                             const std::vector<Vec3>& torque, SolveResult& out, std::string_view context) {
+  const std::size_t n = p.size();
+  if (species.size() != n || force.size() != n || torque.size() != n || p.position.size() != n)
+    throw InputError("resistance solver: species, force and torque need one entry per particle");
+  const double a_tolerance = 1e-12;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int s = species[i];
+    if (s < 0 || static_cast<std::size_t>(s) >= species_radius_.size() ||
+        std::abs(p.radius[i] - species_radius_[s]) > a_tolerance * species_radius_[s])
+      throw InputError("resistance solver: particle " + std::to_string(i) + " has species " + std::to_string(s) +
+                       " and radius " + std::to_string(p.radius[i]) + " inconsistent with the species radii");
+  }
+  for (const ActivePair& pr : pairs)
+    if (pr.i >= n || pr.j >= n || pr.i == pr.j) throw InputError("resistance solver: invalid pair in the list");
+
+  assemble(p, species, pairs, flow, force, torque);
+
+  const Eigen::Index size = 6 * static_cast<Eigen::Index>(n);
+  if (!params_.warm_start || previous_.size() != size) previous_ = Eigen::VectorXd::Zero(size);
+  out.iterations = 0;
+  bool converged = true;
+  if (params_.solver == LinearSolver::conjugate_gradient) {
+    cg_.prepare(matrix_);
+    const ConjugateGradientReport report =
+        cg_.solve(matrix_, rhs_, previous_, params_.tolerance, params_.max_iterations, params_.preconditioner);
+    out.iterations = report.iterations;
+    out.residual = report.residual;
+    converged = report.converged;
+  } else {
+    cholesky_.factorize(matrix_);
+    cholesky_.solve(rhs_, previous_);
+    matrix_.multiply(previous_, check_);
+    const double b_norm = rhs_.norm();
+    out.residual = b_norm > 0.0 ? (rhs_ - check_).norm() / b_norm : 0.0;
+    converged = std::isfinite(out.residual);
+  }
+  if (!converged || !previous_.allFinite()) {
+    std::ostringstream s;
+    s << "resistance solve failed";
+    if (!context.empty()) s << " (" << context << ")";
+    s << ": " << out.iterations << " conjugate-gradient iterations, relative residual " << out.residual
+      << " (tolerance " << params_.tolerance << ", max_iterations " << params_.max_iterations << ")";
+    previous_.resize(0);  // do not warm-start from a failed solve
+    throw NumericalError(s.str());
+  }
+
+  out.velocity.resize(n);
+  out.angular_velocity.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto dv = previous_.segment<6>(6 * static_cast<Eigen::Index>(i));
+    out.velocity[i] = flow.velocity(p.position[i]) + dv.head<3>();
+    out.angular_velocity[i] = flow.angular_velocity(p.position[i]) + dv.tail<3>();
+  }
+  out.lubricated_pairs = lubricated_;
+  accumulate_stress(p, species, pairs, flow, out);
+}
+
+void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<int>& species,
+                                         const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
+                                         SolveResult& out) {
+  const std::ptrdiff_t np = static_cast<std::ptrdiff_t>(pairs.size());
+  out.lubrication_force_on_j.resize(np);
+  pair_stress_.resize(np);
+  const bool dipole = params_.lubrication_stress == LubricationStress::force_dipole;
+  const Eigen::VectorXd& x = previous_;
+  // F_j^lub = -(R_ji dV_i + R_jj dV_j) + (R_FE : E)_j from the stored blocks; each pair writes its own slots.
+#pragma omp parallel for schedule(static) if (np > 256)
+  for (std::ptrdiff_t k = 0; k < np; ++k) {
+    const ActivePair& pr = pairs[k];
+    const std::int32_t l = pair_link_[k];
+    if (l < 0) {
+      out.lubrication_force_on_j[k].setZero();
+      pair_stress_[k].setZero();
+      continue;
+    }
+    const Vector6 dv_i = x.segment<6>(6 * static_cast<Eigen::Index>(pr.i));
+    const Vector6 dv_j = x.segment<6>(6 * static_cast<Eigen::Index>(pr.j));
+    const Vector6 f_j = -(matrix_.coupling()[l].transpose() * dv_i + self_j_[l] * dv_j) + strain_[l].segment<6>(6);
+    out.lubrication_force_on_j[k] = f_j.head<3>();
+    if (dipole) {
+      pair_stress_[k] = -sym_outer(pr.geometry.d, out.lubrication_force_on_j[k]);
+    } else {
+      hydro::PairMotion m;
+      m.du_i = dv_i.head<3>();
+      m.dw_i = dv_i.tail<3>();
+      m.du_j = dv_j.head<3>();
+      m.dw_j = dv_j.tail<3>();
+      m.e_i = flow.strain_rate(p.position[pr.i]);
+      m.e_j = flow.strain_rate(p.position[pr.j]);
+      const hydro::PairHydroForce h = law(species[pr.i], species[pr.j]).evaluate(pr.geometry.n, pr.geometry.gap(), m);
+      pair_stress_[k] = h.stresslet_i + h.stresslet_j;
+    }
+  }
+  out.stress.clear();
+  Mat3& lub = out.stress[Contribution::lubrication];
+  for (const Mat3& s : pair_stress_) lub += s;  // in list order
+  Mat3& hyd = out.stress[Contribution::hydrodynamic];
+  for (std::size_t i = 0; i < p.size(); ++i) hyd += hydro::stokes_stresslet(p.radius[i], p.position[i], flow);
+}
+
+}  // namespace suspend

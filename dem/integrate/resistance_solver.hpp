@@ -1,0 +1,125 @@
+// Overdamped (zero-inertia) hydrodynamic solve of the pairwise lubrication-DEM engine (DESIGN.md section 4;
+// paper 000 eqs. 1-3 with the inertia dropped, Appendix A; Mari, Seto, Morris & Denn, J. Rheol. 58, 1693 (2014)).
+//
+// CONTRACT
+//  * Unknowns: the disturbance velocities dV_i = (U_i - U_inf(x_i), Omega_i - Omega_inf(x_i)), 6 per particle.
+//    The Lees-Edwards image of a particle has the same disturbance velocity, so pairs across the sheared y faces
+//    need no velocity correction (ActivePair::y_images is not used).
+//  * Force balance on every particle (hydrodynamic + non-hydrodynamic force and torque = 0):
+//        (R_Stokes + sum_pairs R_lub) dV = F_nh + sum_pairs R_FE : E_inf + F_Faxen
+//    R_Stokes = diag(6 pi a_i I, 8 pi a_i^3 I) (paper 000 eq. A.1); F_Faxen,i = (6 pi a_i)(a_i^2/6) lap U_inf(x_i)
+//    (zero in simple shear); R_lub, R_FE : E_inf from hydro::PairLubrication (dem/hydro/lubrication.hpp) for pairs
+//    with gap <= outer cutoff; F_nh = (force, torque) ON each particle from contacts and surface forces (caller).
+//  * Output: lab-frame U_i = U_inf(x_i) + dU_i, Omega_i = Omega_inf(x_i) + dOmega_i at the given positions;
+//    stress SUMS (not divided by the volume V; the caller adds 2 E_inf and divides):
+//      hydrodynamic: sum_i (20/3) pi a_i^3 (E_inf + (a_i^2/10) lap E_inf)(x_i)      (paper 000 eq. 9a)
+//      lubrication, LubricationStress::force_dipole (default): sum_pairs -sym(d F_j^lub)  (paper 000 eq. 9b,
+//        paper 002), d = x_j - x_i (minimum image), F_j^lub the lubrication force on j; it has a trace, so the
+//        lubrication contributes to the particle pressure Pi = -tr(Sigma)/3;
+//      lubrication, LubricationStress::stresslet: sum_pairs (S_i + S_j), the traceless resistance-formulation
+//        stresslets -G dU - H dOmega + M : E of hydro::PairLubrication::evaluate (no lubrication pressure).
+//  * Sign: compressive lubrication (spheres squeezed together) gives a positive lubrication pressure.
+// Units: eta_0 = 1, lengths in a_1, velocities in gammadot a_1, forces eta_0 gammadot a_1^2, torques and stresses
+// eta_0 gammadot a_1^3.
+//
+// Solver: preconditioned conjugate gradient (symmetric block Gauss-Seidel by default, or block Jacobi; see
+// conjugate_gradient.hpp) warm-started from the previous solution (default), or sparse Cholesky keeping the symbolic analysis while the pair pattern is unchanged. Deterministic: the result
+// depends only on the inputs (and, for the warm start, the previous call), not on the thread count.
+// Workspaces are kept between calls: no allocation per step once the largest pair count has been seen.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "core/particles.hpp"
+#include "core/stress.hpp"
+#include "dem/hydro/ambient_flow.hpp"
+#include "dem/hydro/lubrication.hpp"
+#include "dem/integrate/block_matrix.hpp"
+#include "dem/integrate/conjugate_gradient.hpp"
+#include "dem/integrate/sparse_cholesky.hpp"
+#include "dem/pair_forces.hpp"
+
+namespace suspend {
+
+enum class LinearSolver { conjugate_gradient, cholesky };
+enum class LubricationStress { force_dipole, stresslet };
+
+struct ResistanceSolverParams {
+  LinearSolver solver = LinearSolver::conjugate_gradient;
+  Preconditioner preconditioner = Preconditioner::symmetric_gauss_seidel;  // of the conjugate gradient
+  double tolerance = 1e-8;    // relative residual |b - R dV| / |b| at which CG stops
+  int max_iterations = 5000;  // CG iterations before NumericalError
+  bool warm_start = true;     // start CG from the previous solution
+  LubricationStress lubrication_stress = LubricationStress::force_dipole;
+  hydro::LubricationParams lubrication;
+  // Throws InputError naming the key (hydrodynamics.solver.*, lubrication.*).
+  void validate() const;
+};
+
+struct SolveResult {
+  std::vector<Vec3> velocity, angular_velocity;  // lab frame, per particle
+  std::vector<Vec3> lubrication_force_on_j;      // per pair of the list given (zero beyond the outer cutoff)
+  StressTensors stress;                          // hydrodynamic and lubrication sums; other parts zero
+  int iterations = 0;                            // CG iterations (0 for Cholesky)
+  double residual = 0.0;                         // relative residual |b - R dV| / |b| of the returned solution
+  std::size_t lubricated_pairs = 0;              // pairs within the outer cutoff
+};
+
+class ResistanceSolver {
+ public:
+  // species_radius[s]: radius of species s (a_1 units). One PairLubrication per ordered species pair.
+  ResistanceSolver(std::vector<double> species_radius, const ResistanceSolverParams& params);
+
+  // One overdamped solve. species[i] indexes species_radius and must match p.radius[i]; pairs come from the
+  // neighbour search (ActivePair, any gap: pairs beyond the outer cutoff are skipped by CG and kept as zero blocks
+  // by Cholesky so that the pattern, and its analysis, survive between neighbour-list rebuilds); force, torque:
+  // non-hydrodynamic force and torque on each particle. flow.box_height must be the box's L_y.
+  // Throws NumericalError (message: context, iterations, residual) if CG does not reach the tolerance, or the
+  // solution is not finite; InputError for inconsistent sizes or radii.
+  void solve(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
+             const hydro::WavyShear& flow, const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
+             SolveResult& out, std::string_view context = {});
+  // Same, with the species of p.species.
+  void solve(const Particles& p, const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
+             const std::vector<Vec3>& force, const std::vector<Vec3>& torque, SolveResult& out,
+             std::string_view context = {});
+
+  // Drops the warm start (e.g. after a restart or a change of the particle set).
+  void forget_warm_start() { previous_.resize(0); }
+
+  const ResistanceSolverParams& params() const { return params_; }
+  // The matrix and right-hand side of the last solve, and its solution dV (for tests and diagnostics).
+  const SymmetricBlockMatrix& matrix() const { return matrix_; }
+  const Eigen::VectorXd& right_hand_side() const { return rhs_; }
+  const Eigen::VectorXd& disturbance() const { return previous_; }
+  int pattern_analyses() const { return cholesky_.analyses(); }
+
+ private:
+  const hydro::PairLubrication& law(int si, int sj) const { return laws_[si * species_radius_.size() + sj]; }
+  void assemble(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
+                const hydro::WavyShear& flow, const std::vector<Vec3>& force, const std::vector<Vec3>& torque);
+  void accumulate_stress(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
+                         const hydro::WavyShear& flow, SolveResult& out);
+
+  std::vector<double> species_radius_;
+  ResistanceSolverParams params_;
+  std::vector<hydro::PairLubrication> laws_;
+
+  // Per link (pair with a block in the matrix): its pair index, its own diagonal contributions and strain forces.
+  std::vector<BlockLink> links_;
+  std::vector<std::uint32_t> link_pair_;
+  std::vector<Matrix6> self_i_, self_j_;
+  std::vector<hydro::Vector12> strain_;
+  std::vector<std::int32_t> pair_link_;  // per pair: its link, or -1 (beyond the outer cutoff, CG)
+  std::size_t lubricated_ = 0;
+
+  SymmetricBlockMatrix matrix_;
+  Eigen::VectorXd rhs_, previous_, check_;
+  PreconditionedConjugateGradient cg_;
+  PatternCholesky cholesky_;
+  std::vector<Mat3> pair_stress_;
+};
+
+}  // namespace suspend
