@@ -144,8 +144,11 @@ void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species
     std::ostringstream s;
     s << "resistance solve failed";
     if (!context.empty()) s << " (" << context << ")";
-    s << ": " << out.iterations << " conjugate-gradient iterations, relative residual " << out.residual
-      << " (tolerance " << params_.tolerance << ", max_iterations " << params_.max_iterations << ")";
+    if (params_.solver == LinearSolver::conjugate_gradient)
+      s << ": " << out.iterations << " conjugate-gradient iterations, relative residual " << out.residual
+        << " (tolerance " << params_.tolerance << ", max_iterations " << params_.max_iterations << ")";
+    else
+      s << ": sparse Cholesky solution not finite (relative residual " << out.residual << ")";
     previous_.resize(0);  // do not warm-start from a failed solve
     throw NumericalError(s.str());
   }
