@@ -19,13 +19,16 @@ void TimeStepParams::validate() const {
 
 void SimulationParams::validate() const {
   suspend::validate(contact);
+  if (lubrication) resistance.validate();
   time_step.validate();
   if (!(max_overlap > 0.0)) throw InputError("run.max_overlap must be > 0");
 }
 
 PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, const SimulationParams& params)
-    : state_(std::move(state)), box_(box), params_(params), range_(interaction_range(params.contact)),
-      list_(interaction_range(params.contact), params.skin) {
+    : state_(std::move(state)), box_(box), params_(params),
+      range_(std::max(interaction_range(params.contact),
+                      params.lubrication ? params.resistance.lubrication.outer_cutoff : 0.0)),
+      list_(range_, params.skin) {
   params_.validate();
   box_.set_strain(state_.strain);
   const Particles& p = state_.particles;
@@ -33,11 +36,30 @@ PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, co
   history_ = ContactHistory(p.size(), ContactHistory::capacity_for(*a_min, *a_max));
   history_.restore(state_.contacts);
   state_.contacts.clear();
+  // Lubrication is tabulated per pair of distinct radii.
+  species_radius_ = p.radius;
+  std::sort(species_radius_.begin(), species_radius_.end());
+  species_radius_.erase(std::unique(species_radius_.begin(), species_radius_.end()), species_radius_.end());
+  species_.resize(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i)
+    species_[i] = static_cast<int>(std::lower_bound(species_radius_.begin(), species_radius_.end(), p.radius[i]) -
+                                   species_radius_.begin());
+  if (params_.lubrication) {
+    solver_.emplace(species_radius_, params_.resistance);
+    if (!state_.warm_start.empty())
+      solver_->set_warm_start(Eigen::Map<const Eigen::VectorXd>(state_.warm_start.data(),
+                                                               static_cast<Eigen::Index>(state_.warm_start.size())));
+    state_.warm_start.clear();
+  }
 }
 
 SimulationState PairwiseSimulation::state_with_contacts() const {
   SimulationState s = state_;
   s.contacts = history_.entries();
+  if (solver_) {
+    const Eigen::VectorXd& dv = solver_->disturbance();
+    s.warm_start.assign(dv.data(), dv.data() + dv.size());
+  }
   return s;
 }
 
@@ -73,18 +95,31 @@ void PairwiseSimulation::evaluate() {
 
   const Vec3 omega_inf(0.0, 0.0, -0.5 * params_.shear_rate);
   double max_speed = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double a = p.radius[i];
-    const Vec3 du = sums_.force[i] / (6.0 * pi * a);
-    p.velocity[i] = ambient_velocity(p.position[i]) + du;
-    p.angular_velocity[i] = omega_inf + sums_.torque[i] / (8.0 * pi * a * a * a);
+  if (solver_) {
+    const hydro::WavyShear flow{params_.shear_rate, 0.0, 0, box_.length().y()};
+    std::ostringstream where;
+    where << "step " << state_.step << ", strain " << state_.strain;
+    solver_->solve(p, species_, active_, flow, sums_.force, sums_.torque, solve_, where.str());
+    for (std::size_t i = 0; i < n; ++i) {
+      p.velocity[i] = solve_.velocity[i];
+      p.angular_velocity[i] = solve_.angular_velocity[i];
+      max_speed = std::max(max_speed, (p.velocity[i] - ambient_velocity(p.position[i])).norm());
+    }
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double a = p.radius[i];
+      const Vec3 du = sums_.force[i] / (6.0 * pi * a);
+      p.velocity[i] = ambient_velocity(p.position[i]) + du;
+      p.angular_velocity[i] = omega_inf + sums_.torque[i] / (8.0 * pi * a * a * a);
+      max_speed = std::max(max_speed, du.norm());
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
     if (!p.velocity[i].allFinite() || !p.angular_velocity[i].allFinite()) {
       std::ostringstream s;
-      s << "non-finite velocity of particle " << i << " (force " << sums_.force[i].transpose() << ")";
+      s << "non-finite velocity of particle " << i << " (contact force " << sums_.force[i].transpose() << ")";
       fail(s.str());
     }
-    max_speed = std::max(max_speed, du.norm());
-  }
 
   // Stress: fluid + Stokes stresslets (hydrodynamic) and pair virials, per unit volume.
   Mat3 e_inf = Mat3::Zero();
@@ -93,8 +128,14 @@ void PairwiseSimulation::evaluate() {
   for (double a : p.radius) a3 += a * a * a;
   const double volume = box_.volume();
   stress_ = sums_.virial;
+  if (solver_) {
+    stress_[Contribution::hydrodynamic] = solve_.stress[Contribution::hydrodynamic];
+    stress_[Contribution::lubrication] = solve_.stress[Contribution::lubrication];
+  } else {
+    stress_[Contribution::hydrodynamic] = (20.0 / 3.0) * pi * a3 * e_inf;
+  }
   for (auto& m : stress_.part) m /= volume;
-  stress_[Contribution::hydrodynamic] = 2.0 * e_inf + (20.0 / 3.0) * pi * a3 / volume * e_inf;
+  stress_[Contribution::hydrodynamic] += 2.0 * e_inf;
 
   // Time step: fixed, or bounded non-affine displacement and the contact relaxation time 6 pi a / k.
   if (params_.time_step.mode == TimeStepParams::Mode::fixed) {

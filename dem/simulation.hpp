@@ -1,11 +1,12 @@
 // The pairwise engine's simulation: particles in simple shear under Lees-Edwards boundaries, overdamped.
 // Each particle feels Stokes drag against the imposed flow (paper 000, eq. A.1 for a linear flow: the Faxen
-// terms vanish) and the contact law (any law of the shared contact module, with its pair history); with zero
-// inertia the force balance gives
-//   U_i = U_inf(r_i) + F_i / (6 pi eta a_i),   Omega_i = Omega_inf + T_i / (8 pi eta a_i^3).
+// terms vanish), optionally pairwise lubrication (paper 000 eq. 3, Appendix A), and the contact law (any law of
+// the shared contact module, with its pair history). With zero inertia the force balance is
+//   without lubrication:  U_i = U_inf(r_i) + F_i / (6 pi eta a_i),   Omega_i = Omega_inf + T_i / (8 pi eta a_i^3);
+//   with lubrication:     (R_Stokes + R_lub) dV = F_contact + R_FE : E_inf   (dem/integrate/resistance_solver.hpp).
 // Bulk stress (paper 000, eqs. 8-9), in units of eta_0 gammadot_ref:
 //   Sigma = 2 eta E_inf + (1/V) [ sum_i (20/3) pi eta a_i^3 E_inf  +  sum_pairs -sym(d F_j^T) ],
-// which gives eta_r = 1 + 2.5 phi for non-interacting spheres (Einstein).
+// with F_j the contact and lubrication forces by contribution; eta_r = 1 + 2.5 phi for far-apart spheres.
 // Units: eta_0 = 1, lengths in a_1, time in 1/gammadot_ref.
 //
 // A step is transactional: evaluate() computes forces, velocities and stress for the current configuration and
@@ -13,6 +14,7 @@
 // moved, so the state is still the last good one and can be checkpointed.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,7 @@
 #include "core/stress.hpp"
 #include "dem/contact/contact_law.hpp"
 #include "dem/contact_history.hpp"
+#include "dem/integrate/resistance_solver.hpp"
 #include "dem/pair_forces.hpp"
 #include "dem/verlet_list.hpp"
 
@@ -39,6 +42,8 @@ struct TimeStepParams {
 struct SimulationParams {
   double shear_rate = 1.0;  // gammadot / gammadot_ref
   ContactLaw contact = ComposedLaw<SoftRepulsion>{};
+  bool lubrication = false;           // pairwise lubrication and the resistance solve, else Stokes drag alone
+  ResistanceSolverParams resistance;  // lubrication cutoffs and the linear solver
   TimeStepParams time_step;
   double max_overlap = 0.1;  // stop if any overlap exceeds this fraction of the smaller radius
   double skin = 0.4;         // neighbour-list skin (a_1)
@@ -54,6 +59,8 @@ struct SimulationState {
   double last_dt = 0.0;  // time step of the last advance: frictional springs integrate the last velocities over it
   // Stored contact histories (tangential and rolling stretch) of the pairs in contact.
   std::vector<ContactHistory::Entry> contacts;
+  // The resistance solver's last disturbance velocities (its warm start), 6 per particle; empty without lubrication.
+  std::vector<double> warm_start;
 };
 
 class PairwiseSimulation {
@@ -74,6 +81,7 @@ class PairwiseSimulation {
   double time_step() const { return dt_; }
   const StressTensors& stress() const { return stress_; }
   double max_overlap() const { return sums_.max_overlap; }
+  int solver_iterations() const { return solve_.iterations; }
   std::size_t contact_count() const { return sums_.contacts; }
   const std::vector<ActivePair>& active_pairs() const { return active_; }
   const VerletList& neighbours() const { return list_; }
@@ -94,6 +102,10 @@ class PairwiseSimulation {
   std::vector<NeighbourPair> active_index_;
   std::vector<PairHistory> pair_history_;
   std::vector<Vec3> pair_force_;
+  std::vector<double> species_radius_;  // distinct radii
+  std::vector<int> species_;            // index into species_radius_ per particle
+  std::optional<ResistanceSolver> solver_;
+  SolveResult solve_;
   PairSums sums_;
   std::vector<PairSums> scratch_;
   std::vector<Vec3> nonaffine_;

@@ -99,6 +99,25 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   {
     SchemaReader h = top.child("hydrodynamics");
     c.hydrodynamics = h.choice("model", "pairwise", {"pairwise"});
+    ResistanceSolverParams& rs = c.simulation.resistance;
+    SchemaReader l = h.child("lubrication");
+    c.simulation.lubrication = l.boolean("enabled", true);
+    rs.lubrication.inner_cutoff = l.number("inner_cutoff", rs.lubrication.inner_cutoff, Range::non_negative());
+    rs.lubrication.outer_cutoff = l.number("outer_cutoff", rs.lubrication.outer_cutoff, Range::positive());
+    rs.lubrication.regularization = l.number("regularization", rs.lubrication.regularization, Range::non_negative());
+    rs.lubrication_stress = l.choice("stress", "force_dipole", {"force_dipole", "stresslet"}) == "stresslet"
+                                ? LubricationStress::stresslet
+                                : LubricationStress::force_dipole;
+    l.finish();
+    SchemaReader v = h.child("solver");
+    rs.solver = v.choice("method", "cg", {"cg", "cholesky"}) == "cholesky" ? LinearSolver::cholesky
+                                                                           : LinearSolver::conjugate_gradient;
+    rs.preconditioner = v.choice("preconditioner", "gauss_seidel", {"gauss_seidel", "jacobi"}) == "jacobi"
+                            ? Preconditioner::block_jacobi
+                            : Preconditioner::symmetric_gauss_seidel;
+    rs.tolerance = v.number("tolerance", rs.tolerance, Range::open(0.0, 1.0));
+    rs.max_iterations = static_cast<int>(v.integer("max_iterations", rs.max_iterations, 1, 1'000'000));
+    v.finish();
     h.finish();
   }
   c.simulation.contact = read_contact(top.child("contact"));
@@ -179,6 +198,20 @@ YAML::Node to_yaml(const Case& c) {
   n["flow"]["type"] = c.flow;
   n["flow"]["shear_rate"] = number_node(c.simulation.shear_rate);
   n["hydrodynamics"]["model"] = c.hydrodynamics;
+  {
+    const ResistanceSolverParams& rs = c.simulation.resistance;
+    YAML::Node l = n["hydrodynamics"]["lubrication"];
+    l["enabled"] = c.simulation.lubrication;
+    l["inner_cutoff"] = number_node(rs.lubrication.inner_cutoff);
+    l["outer_cutoff"] = number_node(rs.lubrication.outer_cutoff);
+    l["regularization"] = number_node(rs.lubrication.regularization);
+    l["stress"] = rs.lubrication_stress == LubricationStress::stresslet ? "stresslet" : "force_dipole";
+    YAML::Node v = n["hydrodynamics"]["solver"];
+    v["method"] = rs.solver == LinearSolver::cholesky ? "cholesky" : "cg";
+    v["preconditioner"] = rs.preconditioner == Preconditioner::block_jacobi ? "jacobi" : "gauss_seidel";
+    v["tolerance"] = number_node(rs.tolerance);
+    v["max_iterations"] = rs.max_iterations;
+  }
   n["contact"] = contact_to_yaml(c.simulation.contact);
   YAML::Node r = n["run"];
   r["strain"] = number_node(c.run.strain);

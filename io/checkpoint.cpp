@@ -59,6 +59,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
     }
     h5::write(id, "contacts/pairs", pairs, {contacts.size(), 2});
     h5::write(id, "contacts/stretch", stretch, {contacts.size(), 6});
+    h5::write(id, "solver/warm_start", c.state.warm_start, {c.state.warm_start.size()});
     h5::set_attribute(id, ".", "next_series", c.clock.next_series);
     h5::set_attribute(id, ".", "next_snapshot", c.clock.next_snapshot);
     h5::set_attribute(id, ".", "next_checkpoint", c.clock.next_checkpoint);
@@ -104,6 +105,11 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     const std::vector<std::int64_t> species = h5::read_ints(id, "particles/species");
     if (species.size() != n) throw InputError(path + ": particles/species has the wrong size");
     p.species.assign(species.begin(), species.end());
+    c.state.warm_start = h5::read_doubles(id, "solver/warm_start");
+    if (!c.state.warm_start.empty() && c.state.warm_start.size() != 6 * n)
+      throw InputError(path + ": solver/warm_start does not match the particle count");
+    for (double v : c.state.warm_start)
+      if (!std::isfinite(v)) throw InputError(path + ": solver/warm_start is not finite");
     const std::vector<std::int64_t> pairs = h5::read_ints(id, "contacts/pairs");
     const std::vector<double> stretch = h5::read_doubles(id, "contacts/stretch");
     if (stretch.size() != 3 * pairs.size()) throw InputError(path + ": contacts/stretch does not match contacts/pairs");

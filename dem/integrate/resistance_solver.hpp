@@ -86,8 +86,10 @@ class ResistanceSolver {
              const std::vector<Vec3>& force, const std::vector<Vec3>& torque, SolveResult& out,
              std::string_view context = {});
 
-  // Drops the warm start (e.g. after a restart or a change of the particle set).
+  // Drops the warm start (e.g. after a change of the particle set).
   void forget_warm_start() { previous_.resize(0); }
+  // Sets the warm start (a checkpointed disturbance(), so that a restart continues bit for bit).
+  void set_warm_start(const Eigen::VectorXd& dv) { previous_ = dv; }
 
   const ResistanceSolverParams& params() const { return params_; }
   // The matrix and right-hand side of the last solve, and its solution dV (for tests and diagnostics).

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 struct CommandRun {
@@ -16,7 +17,8 @@ struct CommandRun {
   std::string out;
 };
 CommandRun run_mobility(const std::string& args) {
-  const std::string out_file = std::string(SUSPEND_BINARY_DIR) + "/test_cmd_mobility.out";
+  // One output file per process: ctest runs the tests of this file in parallel.
+  const std::string out_file = std::string(SUSPEND_BINARY_DIR) + "/test_cmd_mobility." + std::to_string(getpid()) + ".out";
   const std::string cmd = std::string(SUSPEND_BINARY_DIR) + "/bin/suspend mobility " + args + " > " + out_file + " 2>&1";
   const int status = std::system(cmd.c_str());
   std::ifstream in(out_file);
