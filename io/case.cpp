@@ -7,7 +7,6 @@
 
 #include "io/contact_case.hpp"
 #include "io/schema_reader.hpp"
-#include "io/units.hpp"
 
 namespace suspend::io {
 
