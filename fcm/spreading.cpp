@@ -203,7 +203,7 @@ void spread(const SupportPlan& plan, std::span<const Vec3> forces, std::span<con
       // d/dx_j Delta_D = -d_j / sigma_D^2 Delta_D, so G_ij d_j Delta_D = (G d)_i w_D (-1 / sigma_D^2).
       const Mat3 gs = has_g ? Mat3(dipoles[p] * plan.dipole_scale[k]) : Mat3::Zero();
       const SupportRow* begin = rows + plan.row_begin[k];
-      const SupportRow* end = rows + plan.row_begin[k + 1];
+      const SupportRow* end = rows + plan.row_end[k];
       if (has_f)
         spread_particle<true>(begin, end, tables, f, gs, zb, ze, fx, fy, fz);
       else
@@ -224,7 +224,7 @@ void interpolate(const SupportPlan& plan, const double* field, std::size_t strid
     const std::size_t ku = static_cast<std::size_t>(k);
     Vec3 u;
     Mat3 a;
-    interpolate_particle(rows + plan.row_begin[ku], rows + plan.row_begin[ku + 1], tables, field, field + stride,
+    interpolate_particle(rows + plan.row_begin[ku], rows + plan.row_end[ku], tables, field, field + stride,
                          field + 2 * stride, u, a);
     // A_ij = sum u_i d_j Delta_D dV with d_j Delta_D = -d_j / sigma_D^2 Delta_D.
     const std::size_t p = plan.particle[ku];

@@ -14,6 +14,17 @@
 namespace suspend::fcm {
 namespace {
 
+// floor and ceil for values well inside the int range, without a libm call (the row loop runs ~100 times per
+// particle).
+int floor_int(double v) {
+  const int i = static_cast<int>(v);
+  return i - (v < i ? 1 : 0);
+}
+int ceil_int(double v) {
+  const int i = static_cast<int>(v);
+  return i + (v > i ? 1 : 0);
+}
+
 double gaussian_norm(double sigma) { return std::pow(2.0 * std::numbers::pi * sigma * sigma, -1.5); }
 
 void gaussian_row(double d0, double h, double a, int count, double* out) {
@@ -97,8 +108,8 @@ void for_each_row(const ShearedGrid& g, const Envelope& e, const Extent& x, std:
       const double rx = std::sqrt(rx2);
       // Node range [ka, kb] of the sphere's chord within the tabulated nodes kx0 .. kx0 + width - 1.
       const int kx0 = t.kx0[j];
-      const int ia = std::max(static_cast<int>(std::ceil((-t.dx0[j] - rx) * inv_hx)), 0);
-      const int ib = std::min(static_cast<int>(std::floor((-t.dx0[j] + rx) * inv_hx)), x.width - 1);
+      const int ia = std::max(ceil_int((-t.dx0[j] - rx) * inv_hx), 0);
+      const int ib = std::min(floor_int((-t.dx0[j] + rx) * inv_hx), x.width - 1);
       if (ib < ia) continue;
       SupportRow r;
       r.width = static_cast<std::uint16_t>(x.width);
@@ -170,23 +181,26 @@ void plan_support(const ShearedGrid& g, std::span<const Envelope> envelopes, std
   plan.dipole_scale.resize(n);
   std::vector<std::size_t> table_begin(n + 1, 0);
   plan.row_begin.assign(n + 1, 0);  // (sizes only grow or shrink: a reused plan is not zero-filled again)
-  // Pass 1: rows and table entries per visit.
-#pragma omp parallel
-  {
-  AxisTables axis;
-#pragma omp for schedule(dynamic, 32)
+  plan.row_end.resize(n);
+  // Pass 1: row slots and table entries per visit.
+#pragma omp parallel for schedule(dynamic, 32)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     const std::size_t ku = static_cast<std::size_t>(k);
     const std::uint32_t p = order.empty() ? static_cast<std::uint32_t>(k) : order[ku];
     const Envelope& e = envelopes[p];
     const Extent x = extent_of(g, e);
-    std::size_t rows = 0;
-    for_each_row(g, e, x, 0, axis, [&](const SupportRow&) { ++rows; });
+    // Room for every (z, y) pair of the extent, twice where the tabulated x range crosses the periodic boundary:
+    // an upper bound, so the rows are written in one pass (the unused tail of a slot is skipped via row_end).
+    std::size_t slots = 0;
+    for (int ky = x.ky0; ky <= x.ky1; ++ky) {
+      const int ix = periodic_index(row_start(g, e, ky), g.n[0]);
+      slots += ix + x.width > g.n[0] ? 2 : 1;
+    }
+    const std::size_t rows = slots * static_cast<std::size_t>(std::max(x.kz1 - x.kz0 + 1, 0));
     plan.particle[ku] = p;
     plan.dipole_scale[ku] = -1.0 / (e.sigma_d * e.sigma_d);
     plan.row_begin[ku + 1] = rows;
     table_begin[ku + 1] = 3 * static_cast<std::size_t>(x.rows()) * x.width;
-  }
   }
   for (std::size_t k = 0; k < n; ++k) {
     plan.row_begin[k + 1] += plan.row_begin[k];
@@ -196,7 +210,7 @@ void plan_support(const ShearedGrid& g, std::span<const Envelope> envelopes, std
     throw NumericalError("fcm: envelope tables too large for 32-bit offsets");
   plan.rows.resize(plan.row_begin[n]);
   plan.tables.resize(table_begin[n]);
-  // Pass 2: fill.
+  // Pass 2: tables and rows.
 #pragma omp parallel
   {
   AxisTables axis;
@@ -208,10 +222,12 @@ void plan_support(const ShearedGrid& g, std::span<const Envelope> envelopes, std
     fill_tables(g, e, x, plan.tables.data() + table_begin[ku]);
     std::size_t r = plan.row_begin[ku];
     for_each_row(g, e, x, table_begin[ku], axis, [&](const SupportRow& row) { plan.rows[r++] = row; });
+    plan.row_end[ku] = r;
   }
   }
   plan.plane_nodes.assign(static_cast<std::size_t>(g.n[2]), 0);
-  for (const SupportRow& r : plan.rows) plan.plane_nodes[r.iz] += r.count;
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t j = plan.row_begin[k]; j < plan.row_end[k]; ++j) plan.plane_nodes[plan.rows[j].iz] += plan.rows[j].count;
 }
 
 std::vector<std::uint32_t> grid_order(const ShearedGrid& g, std::span<const Envelope> envelopes) {

@@ -38,7 +38,8 @@ struct SupportRow {
 
 struct SupportPlan {
   std::vector<std::uint32_t> particle;   // particle visited at position k (spatially sorted)
-  std::vector<std::size_t> row_begin;    // rows of visit k: [row_begin[k], row_begin[k + 1])
+  std::vector<std::size_t> row_begin;    // rows of visit k: [row_begin[k], row_end[k]) (slots up to
+  std::vector<std::size_t> row_end;      //   row_begin[k + 1] are reserved, an upper bound)
   std::vector<double> dipole_scale;      // -1 / sD^2 of visit k
   std::vector<SupportRow> rows;
   std::vector<double> tables;
