@@ -59,8 +59,10 @@ std::pair<int, int> balanced_slab(const std::vector<std::size_t>& plane_nodes, i
 constexpr int kMaxFixed = 16;
 
 // On x86-64 with GCC the per-particle loops are also compiled for AVX2 + FMA and chosen at load time (ifunc), so
-// the portable baseline binary still uses the 4-wide units where the CPU has them.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+// the portable baseline binary still uses the 4-wide units where the CPU has them. Not under the thread or address
+// sanitizer: their instrumentation of the ifunc resolver runs before the sanitizer runtime is up.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && \
+    !defined(__SANITIZE_THREAD__) && !defined(__SANITIZE_ADDRESS__)
 #define SUSPEND_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
 #else
 #define SUSPEND_SIMD_CLONES
@@ -197,7 +199,9 @@ void spread(const SupportPlan& plan, std::span<const Vec3> forces, std::span<con
     // Thread t owns z planes [z_begin, z_end): writes never collide.
     const auto [z_begin, z_end] = balanced_slab(plan.plane_nodes, omp_get_thread_num(), omp_get_num_threads());
     const auto zb = static_cast<std::uint32_t>(z_begin), ze = static_cast<std::uint32_t>(z_end);
+    const auto nz = static_cast<std::uint32_t>(plan.plane_nodes.size());
     for (std::size_t k = 0; k < count; ++k) {
+      if (!plan.touches_planes(k, zb, ze, nz)) continue;
       const std::size_t p = plan.particle[k];
       const Vec3 f = has_f ? forces[p] : Vec3::Zero();
       // d/dx_j Delta_D = -d_j / sigma_D^2 Delta_D, so G_ij d_j Delta_D = (G d)_i w_D (-1 / sigma_D^2).

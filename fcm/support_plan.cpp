@@ -182,6 +182,8 @@ void plan_support(const ShearedGrid& g, std::span<const Envelope> envelopes, std
   std::vector<std::size_t> table_begin(n + 1, 0);
   plan.row_begin.assign(n + 1, 0);  // (sizes only grow or shrink: a reused plan is not zero-filled again)
   plan.row_end.resize(n);
+  plan.z_first.resize(n);
+  plan.z_planes.resize(n);
   // Pass 1: row slots and table entries per visit.
 #pragma omp parallel for schedule(dynamic, 32)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
@@ -198,6 +200,8 @@ void plan_support(const ShearedGrid& g, std::span<const Envelope> envelopes, std
     }
     const std::size_t rows = slots * static_cast<std::size_t>(std::max(x.kz1 - x.kz0 + 1, 0));
     plan.particle[ku] = p;
+    plan.z_first[ku] = static_cast<std::uint32_t>(periodic_index(x.kz0, g.n[2]));
+    plan.z_planes[ku] = static_cast<std::uint32_t>(std::clamp(x.kz1 - x.kz0 + 1, 0, g.n[2]));
     plan.dipole_scale[ku] = -1.0 / (e.sigma_d * e.sigma_d);
     plan.row_begin[ku + 1] = rows;
     table_begin[ku + 1] = 3 * static_cast<std::size_t>(x.rows()) * x.width;

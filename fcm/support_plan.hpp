@@ -41,12 +41,19 @@ struct SupportPlan {
   std::vector<std::size_t> row_begin;    // rows of visit k: [row_begin[k], row_end[k]) (slots up to
   std::vector<std::size_t> row_end;      //   row_begin[k + 1] are reserved, an upper bound)
   std::vector<double> dipole_scale;      // -1 / sD^2 of visit k
+  std::vector<std::uint32_t> z_first;    // first z plane (wrapped) of visit k's extent ...
+  std::vector<std::uint32_t> z_planes;   // ... and its number of planes (may wrap past n_z)
   std::vector<SupportRow> rows;
   std::vector<double> tables;
   std::vector<std::size_t> plane_nodes;  // support nodes per z plane: the work a spreading thread owns
   double cell_volume = 0.0;
 
   std::size_t visits() const { return particle.size(); }
+  // Whether visit k has nodes in the z planes [z_begin, z_end) of a grid with nz planes.
+  bool touches_planes(std::size_t k, std::uint32_t z_begin, std::uint32_t z_end, std::uint32_t nz) const {
+    const std::uint32_t a = z_first[k], b = z_first[k] + z_planes[k];  // [a, b), b may exceed nz
+    return (a < z_end && b > z_begin) || (b > nz && b - nz > z_begin);
+  }
   std::size_t nodes() const;  // total support nodes, summed over particles
 };
 
