@@ -71,7 +71,7 @@ static void BM_FcmStokesSolve(benchmark::State& state) {
 }
 BENCHMARK(BM_FcmStokesSolve)
     ->ArgsProduct({{64}, {10, 40}, {1, 2}})
-    ->Args({128, 40, 2})
+    ->ArgsProduct({{128}, {40}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
@@ -108,6 +108,6 @@ static void BM_BareFfts(benchmark::State& state) {
     fft.inverse(FftScaling::none);
   }
 }
-BENCHMARK(BM_BareFfts)->ArgsProduct({{64}, {1, 2}})->Args({128, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_BareFfts)->ArgsProduct({{64, 128}, {1, 2}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();
