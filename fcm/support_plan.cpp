@@ -154,12 +154,6 @@ void fill_tables(const ShearedGrid& g, const Envelope& e, const Extent& x, doubl
 
 }  // namespace
 
-std::size_t SupportPlan::nodes() const {
-  std::size_t s = 0;
-  for (std::size_t c : plane_nodes) s += c;
-  return s;
-}
-
 SupportPlan plan_support(const ShearedGrid& g, std::span<const Envelope> envelopes,
                          std::span<const std::uint32_t> order) {
   SupportPlan plan;

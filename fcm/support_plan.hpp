@@ -54,7 +54,6 @@ struct SupportPlan {
     const std::uint32_t a = z_first[k], b = z_first[k] + z_planes[k];  // [a, b), b may exceed nz
     return (a < z_end && b > z_begin) || (b > nz && b - nz > z_begin);
   }
-  std::size_t nodes() const;  // total support nodes, summed over particles
 };
 
 // Builds the plan; `order` is the visiting order (e.g. grid_order; empty = index order). OpenMP-parallel.
