@@ -22,6 +22,7 @@
 #include "fcm/fft.hpp"
 #include "fcm/sheared_grid.hpp"
 #include "fcm/spreading.hpp"
+#include "fcm/support_plan.hpp"
 
 namespace suspend::fcm {
 
@@ -55,9 +56,10 @@ struct MobilityResult {
   double residual = 0.0;           // final relative residual of the rigidity condition
 };
 
-// Wall-clock seconds spent in each stage since construction or reset_timings().
+// Wall-clock seconds spent in each stage since construction or reset_timings(). `plan` (tabulating the envelope
+// footprints, support_plan.hpp) is paid once per configuration, the others once per Stokes solve (`solves`).
 struct SolveTimings {
-  double spread = 0.0, fft = 0.0, green = 0.0, interpolate = 0.0;
+  double plan = 0.0, spread = 0.0, fft = 0.0, green = 0.0, interpolate = 0.0;
   int solves = 0;
 };
 
@@ -91,7 +93,7 @@ class Solver {
   ShearedGrid grid_;
   std::unique_ptr<VectorFft> fft_;
   std::vector<Envelope> envelopes_;
-  std::vector<std::uint32_t> order_;  // spatially sorted visiting order
+  SupportPlan plan_;  // envelope footprints of the current configuration, in spatially sorted order
   std::vector<Mat3> last_stresslets_;
   SolveTimings timings_;
 };

@@ -2,123 +2,15 @@
 
 #include <omp.h>
 
-#include <algorithm>
-#include <cmath>
-#include <numbers>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "fcm/envelope.hpp"
 
 namespace suspend::fcm {
-namespace {
-
-double gaussian_norm(double sigma) { return std::pow(2.0 * std::numbers::pi * sigma * sigma, -1.5); }
-
-// Gaussian factors tabulated once per particle: along z and y (1-D), and along x' once per y row (the row centre
-// moves with y on the sheared lattice). The truncation sphere then only selects which entries are used.
-// Tables are filled with the exact recurrence exp(-(d+h)^2/2s^2) = exp(-d^2/2s^2) r, r <- r exp(-h^2/s^2).
-struct SupportTables {
-  std::vector<double> zm, zd, ym, yd, xm, xd;  // xm/xd: row-major [ky - ky0][kx - kx0[ky]]
-  std::vector<int> kx0;
-  std::vector<double> dx0;
-};
-
-void gaussian_row(double d0, double h, double a, int count, double* out) {
-  // out[i] = exp(-a (d0 + i h)^2)
-  double w = std::exp(-a * d0 * d0), r = std::exp(-a * (2.0 * d0 * h + h * h));
-  const double q = std::exp(-2.0 * a * h * h);
-  for (int i = 0; i < count; ++i) {
-    out[i] = w;
-    w *= r;
-    r *= q;
-  }
-}
-
-// One contiguous run of nodes inside the truncation sphere: nodes first .. first + count - 1 of the field, with
-// Gaussians w_m = yz_m xm[i], w_d = yz_d xd[i] and physical offset d = (dx + i h_x, dy, dz) from the centre.
-struct RowSegment {
-  std::size_t first;
-  int count;
-  const double* xm;
-  const double* xd;
-  double dx, dy, dz, yz_m, yz_d;
-};
-
-// Calls row(segment) for the runs of nodes within the truncation sphere of the envelope whose z plane lies in
-// [z_begin, z_end); a row that wraps around the periodic x' boundary is split in two runs.
-template <class Row>
-void visit_support(const ShearedGrid& g, const Envelope& e, int z_begin, int z_end, SupportTables& t, Row&& row) {
-  const double hx = g.spacing.x(), hy = g.spacing.y(), hz = g.spacing.z();
-  const double inv_hx = 1.0 / hx;
-  const double r2 = e.support * e.support;
-  const double am = 0.5 / (e.sigma_m * e.sigma_m), ad = 0.5 / (e.sigma_d * e.sigma_d);
-  const double cm = gaussian_norm(e.sigma_m), cd = gaussian_norm(e.sigma_d);
-  const int kz0 = static_cast<int>(std::ceil((e.centre.z() - e.support) / hz));
-  const int kz1 = static_cast<int>(std::floor((e.centre.z() + e.support) / hz));
-  // Skip particles with no plane in this thread's slab before tabulating anything.
-  bool any = false;
-  for (int kz = kz0; kz <= kz1 && !any; ++kz) {
-    const int iz = periodic_index(kz, g.n[2]);
-    any = iz >= z_begin && iz < z_end;
-  }
-  if (!any) return;
-  const int ky0 = static_cast<int>(std::ceil((e.centre.y() - e.support) / hy));
-  const int ky1 = static_cast<int>(std::floor((e.centre.y() + e.support) / hy));
-  const int nzs = kz1 - kz0 + 1, nys = ky1 - ky0 + 1;
-  const int width = static_cast<int>(std::ceil(2.0 * e.support / hx)) + 2;
-  t.zm.resize(nzs);
-  t.zd.resize(nzs);
-  t.ym.resize(nys);
-  t.yd.resize(nys);
-  t.kx0.resize(nys);
-  t.dx0.resize(nys);
-  t.xm.resize(static_cast<std::size_t>(nys) * width);
-  t.xd.resize(static_cast<std::size_t>(nys) * width);
-  gaussian_row(kz0 * hz - e.centre.z(), hz, am, nzs, t.zm.data());
-  gaussian_row(kz0 * hz - e.centre.z(), hz, ad, nzs, t.zd.data());
-  gaussian_row(ky0 * hy - e.centre.y(), hy, am, nys, t.ym.data());
-  gaussian_row(ky0 * hy - e.centre.y(), hy, ad, nys, t.yd.data());
-  for (int j = 0; j < nys; ++j) {
-    // Row centre in sheared coordinates: node x' = kx h_x is at physical x' + gamma_t y.
-    const double xc = e.centre.x() - g.shear_fraction * (ky0 + j) * hy;
-    t.kx0[j] = static_cast<int>(std::ceil((xc - e.support) / hx));
-    t.dx0[j] = t.kx0[j] * hx - xc;
-    gaussian_row(t.dx0[j], hx, am, width, &t.xm[static_cast<std::size_t>(j) * width]);
-    gaussian_row(t.dx0[j], hx, ad, width, &t.xd[static_cast<std::size_t>(j) * width]);
-  }
-  for (int kz = kz0; kz <= kz1; ++kz) {
-    const int iz = periodic_index(kz, g.n[2]);
-    if (iz < z_begin || iz >= z_end) continue;
-    const double dz = kz * hz - e.centre.z();
-    const double ry2 = r2 - dz * dz;
-    if (ry2 < 0.0) continue;
-    const double zm = cm * t.zm[kz - kz0], zd = cd * t.zd[kz - kz0];
-    for (int j = 0; j < nys; ++j) {
-      const int ky = ky0 + j;
-      const double dy = ky * hy - e.centre.y();
-      const double rx2 = ry2 - dy * dy;
-      if (rx2 < 0.0) continue;
-      const double rx = std::sqrt(rx2);
-      // Node range [ka, kb] of the sphere's chord, relative to the tabulated row start kx0 (xc - kx0 h = -dx0).
-      const int ka = t.kx0[j] + std::max(static_cast<int>(std::ceil((-t.dx0[j] - rx) * inv_hx)), 0);
-      const int kb = t.kx0[j] + std::min(static_cast<int>(std::floor((-t.dx0[j] + rx) * inv_hx)), width - 1);
-      if (kb < ka) continue;
-      const double yzm = zm * t.ym[j], yzd = zd * t.yd[j];
-      const double* xm = &t.xm[static_cast<std::size_t>(j) * width];
-      const double* xd = &t.xd[static_cast<std::size_t>(j) * width];
-      const std::size_t base = g.index(0, periodic_index(ky, g.n[1]), iz);
-      const int i0 = ka - t.kx0[j];
-      const int ix = periodic_index(ka, g.n[0]);
-      const int total = kb - ka + 1, first_run = std::min(total, g.n[0] - ix);
-      row(RowSegment{base + ix, first_run, xm + i0, xd + i0, t.dx0[j] + i0 * hx, dy, dz, yzm, yzd});
-      if (first_run < total)
-        row(RowSegment{base, total - first_run, xm + i0 + first_run, xd + i0 + first_run,
-                       t.dx0[j] + (i0 + first_run) * hx, dy, dz, yzm, yzd});
-    }
-  }
-}
-
-}  // namespace
 
 Envelope make_envelope(const Vec3& centre, double radius, double truncation_widths) {
   const double sm = monopole_width(radius);
@@ -139,116 +31,221 @@ Vec3 angular_velocity_of(const Mat3& a) {
 
 Mat3 strain_rate_of(const Mat3& a) { return -0.5 * (a + a.transpose()); }
 
-std::vector<std::uint32_t> grid_order(const ShearedGrid& g, std::span<const Envelope> envelopes) {
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> key(envelopes.size());
-  for (std::size_t p = 0; p < envelopes.size(); ++p) {
-    const Vec3& c = envelopes[p].centre;
-    const int iy = periodic_index(static_cast<int>(std::floor(c.y() / g.spacing.y())), g.n[1]);
-    const double xs = c.x() - g.shear_fraction * std::floor(c.y() / g.spacing.y()) * g.spacing.y();
-    const int ix = periodic_index(static_cast<int>(std::floor(xs / g.spacing.x())), g.n[0]);
-    const int iz = periodic_index(static_cast<int>(std::floor(c.z() / g.spacing.z())), g.n[2]);
-    // Blocks of 8 nodes (~4 h = 2 a at h = a/2) ordered lexicographically: consecutive particles are neighbours
-    // in all three directions and share most of the grid rows they touch.
-    constexpr int b = 8;
-    const std::uint64_t bx = ix / b, by = iy / b, bz = iz / b;
-    const std::uint64_t nbx = (g.n[0] + b - 1) / b, nby = (g.n[1] + b - 1) / b;
-    key[p] = {((bz * nby + by) * nbx + bx) << 32 | g.index(ix, iy, iz), static_cast<std::uint32_t>(p)};
-  }
-  std::sort(key.begin(), key.end());
-  std::vector<std::uint32_t> order(envelopes.size());
-  for (std::size_t k = 0; k < key.size(); ++k) order[k] = key[k].second;
-  return order;
+namespace {
+
+// Thread t of `threads` owns the z planes [begin, end) holding the t-th share of the support nodes.
+std::pair<int, int> balanced_slab(const std::vector<std::size_t>& plane_nodes, int t, int threads) {
+  std::size_t total = 0;
+  for (std::size_t c : plane_nodes) total += c;
+  const int nz = static_cast<int>(plane_nodes.size());
+  auto boundary = [&](int s) {  // first plane after the first s/threads of the work
+    if (s <= 0) return 0;
+    if (s >= threads) return nz;
+    const double target = static_cast<double>(total) * s / threads;
+    std::size_t sum = 0;
+    int z = 0;
+    while (z < nz && static_cast<double>(sum + plane_nodes[z]) <= target) sum += plane_nodes[z++];
+    return z;
+  };
+  return {boundary(t), boundary(t + 1)};
 }
 
-void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::span<const Vec3> forces,
-            std::span<const Mat3> dipoles, double* field, std::size_t stride, std::span<const std::uint32_t> order) {
-  const bool has_f = !forces.empty(), has_g = !dipoles.empty();
-  if (!has_f && !has_g) return;
-  const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(envelopes.size());
-  double* fx = field;
-  double* fy = field + stride;
-  double* fz = field + 2 * stride;
-#pragma omp parallel
-  {
-    // Thread t owns z planes [z_begin, z_end): writes never collide.
-    const int threads = omp_get_num_threads(), t = omp_get_thread_num();
-    const int nz = grid.n[2];
-    const int z_begin = static_cast<int>(static_cast<long>(nz) * t / threads);
-    const int z_end = static_cast<int>(static_cast<long>(nz) * (t + 1) / threads);
-    SupportTables tables;
-    for (std::ptrdiff_t k = 0; k < count; ++k) {
-      const std::size_t p = order.empty() ? static_cast<std::size_t>(k) : order[static_cast<std::size_t>(k)];
-      const Envelope& e = envelopes[p];
-      const Vec3 f = has_f ? forces[p] : Vec3::Zero();
-      // d/dx_j Delta_D = -d_j / sigma_D^2 Delta_D, so G_ij d_j Delta_D = -(G d)_i w_d / sigma_D^2.
-      const Mat3 gs = has_g ? Mat3(-dipoles[p] / (e.sigma_d * e.sigma_d)) : Mat3::Zero();
-      const double hx = grid.spacing.x();
-      visit_support(grid, e, z_begin, z_end, tables, [&](const RowSegment& r) {
-        // gs d = gs.col(0) dx + (gs.col(1) dy + gs.col(2) dz): only the first term varies along the row.
-        const Vec3 b = gs.col(1) * r.dy + gs.col(2) * r.dz;
-        const double g0 = gs(0, 0), g1 = gs(1, 0), g2 = gs(2, 0);
-        double* px = fx + r.first;
-        double* py = fy + r.first;
-        double* pz = fz + r.first;
-        for (int i = 0; i < r.count; ++i) {
-          const double wm = r.yz_m * r.xm[i], wd = r.yz_d * r.xd[i], dx = r.dx + i * hx;
-          px[i] += f.x() * wm + (b.x() + g0 * dx) * wd;
-          py[i] += f.y() * wm + (b.y() + g1 * dx) * wd;
-          pz[i] += f.z() * wm + (b.z() + g2 * dx) * wd;
-        }
-      });
+// Row kernels. A row's node weights are w_M = yz_m m[i] and w_D = yz_d d[i] (support_plan.hpp); with the
+// row's constants folded into coefficients, a node update is three multiply-adds per component:
+//   f_c[i] += a_c m[i] + b_c d[i] + c_c dd[i],
+// a = yz_m F, b = gs_c1 ydy + gs_c2 ydz, c = yz_d gs_c0, gs = -G / sD^2 (d_j Delta_D = -d_j/sD^2 Delta_D).
+// Rows are short (~7 nodes at h = a/2), so the row loop is instantiated for every length up to kMaxFixed: the
+// compiler unrolls and vectorises each one without loop prologue or remainder.
+constexpr int kMaxFixed = 16;
+
+// On x86-64 with GCC the per-particle loops are also compiled for AVX2 + FMA and chosen at load time (ifunc), so
+// the portable baseline binary still uses the 4-wide units where the CPU has them. Not under the thread or address
+// sanitizer: their instrumentation of the ifunc resolver runs before the sanitizer runtime is up.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && \
+    !defined(__SANITIZE_THREAD__) && !defined(__SANITIZE_ADDRESS__)
+#define SUSPEND_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define SUSPEND_SIMD_CLONES
+#endif
+
+struct RowCoefficients {
+  double a[3], b[3], c[3];
+};
+
+template <bool Monopole, int N>
+[[gnu::always_inline]] inline void spread_run(const double* __restrict m, const double* __restrict d,
+                                              const double* __restrict dd, const RowCoefficients& k,
+                                              double* __restrict px, double* __restrict py, double* __restrict pz,
+                                              int count) {
+  const int n = N > 0 ? N : count;
+  const double a0 = k.a[0], a1 = k.a[1], a2 = k.a[2], b0 = k.b[0], b1 = k.b[1], b2 = k.b[2];
+  const double c0 = k.c[0], c1 = k.c[1], c2 = k.c[2];
+#pragma omp simd
+  for (int i = 0; i < n; ++i) {
+    if constexpr (Monopole) {
+      px[i] += a0 * m[i] + b0 * d[i] + c0 * dd[i];
+      py[i] += a1 * m[i] + b1 * d[i] + c1 * dd[i];
+      pz[i] += a2 * m[i] + b2 * d[i] + c2 * dd[i];
+    } else {
+      px[i] += b0 * d[i] + c0 * dd[i];
+      py[i] += b1 * d[i] + c1 * dd[i];
+      pz[i] += b2 * d[i] + c2 * dd[i];
     }
   }
 }
 
-void interpolate(const ShearedGrid& grid, std::span<const Envelope> envelopes, const double* field,
-                 std::size_t stride, std::span<Vec3> velocities, std::span<Mat3> gradient_moments,
-                 std::span<const std::uint32_t> order) {
-  const bool want_u = !velocities.empty(), want_a = !gradient_moments.empty();
-  const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(envelopes.size());
-  const double dv = grid.cell_volume();
-  const double* ux = field;
-  const double* uy = field + stride;
-  const double* uz = field + 2 * stride;
+// sums += (sum u_c m, sum u_c d, sum u_c dd) over the row, c = x, y, z, each scaled by its row factor.
+struct RowSums {
+  double m0 = 0, m1 = 0, m2 = 0, d0 = 0, d1 = 0, d2 = 0, t0 = 0, t1 = 0, t2 = 0;
+};
+
+template <int N>
+[[gnu::always_inline]] inline RowSums interpolate_run(const double* __restrict m, const double* __restrict d,
+                                                      const double* __restrict dd, const double* __restrict px,
+                                                      const double* __restrict py, const double* __restrict pz,
+                                                      int count) {
+  const int n = N > 0 ? N : count;
+  double m0 = 0, m1 = 0, m2 = 0, d0 = 0, d1 = 0, d2 = 0, t0 = 0, t1 = 0, t2 = 0;
+#pragma omp simd reduction(+ : m0, m1, m2, d0, d1, d2, t0, t1, t2)
+  for (int i = 0; i < n; ++i) {
+    m0 += px[i] * m[i];
+    m1 += py[i] * m[i];
+    m2 += pz[i] * m[i];
+    d0 += px[i] * d[i];
+    d1 += py[i] * d[i];
+    d2 += pz[i] * d[i];
+    t0 += px[i] * dd[i];
+    t1 += py[i] * dd[i];
+    t2 += pz[i] * dd[i];
+  }
+  return {m0, m1, m2, d0, d1, d2, t0, t1, t2};
+}
+
+// Calls f(std::integral_constant<int, N>) with N = count for count <= kMaxFixed, else N = 0 (any length).
+template <class F, int... I>
+[[gnu::always_inline]] inline void with_fixed_length(int count, F&& f, std::integer_sequence<int, I...>) {
+  const bool fixed = ((count == I + 1 ? (f(std::integral_constant<int, I + 1>{}), true) : false) || ...);
+  if (!fixed) f(std::integral_constant<int, 0>{});
+}
+
+// Spreads one particle's rows lying in planes [zb, ze).
+template <bool Monopole>
+SUSPEND_SIMD_CLONES void spread_particle(const SupportRow* rows, const SupportRow* rows_end, const double* tables,
+                                         const Vec3& f, const Mat3& gs, std::uint32_t zb, std::uint32_t ze,
+                                         double* fx, double* fy, double* fz) {
+  for (const SupportRow* r = rows; r != rows_end; ++r) {
+    if (r->iz < zb || r->iz >= ze) continue;
+    RowCoefficients c;
+    for (int i = 0; i < 3; ++i) {
+      c.a[i] = f[i] * r->yz_m;
+      c.b[i] = gs(i, 1) * r->ydy + gs(i, 2) * r->ydz;
+      c.c[i] = gs(i, 0) * r->yz_d;
+    }
+    const double* m = tables + r->table;
+    const double* d = m + r->width;
+    const double* dd = d + r->width;
+    double* px = fx + r->first;
+    double* py = fy + r->first;
+    double* pz = fz + r->first;
+    const int n = r->count;
+    with_fixed_length(
+        n, [&](auto len) { spread_run<Monopole, decltype(len)::value>(m, d, dd, c, px, py, pz, n); },
+        std::make_integer_sequence<int, kMaxFixed>{});
+  }
+}
+
+// Interpolates one particle: returns U / dV and the columns of A / (dV (-1/sD^2)).
+SUSPEND_SIMD_CLONES void interpolate_particle(const SupportRow* rows, const SupportRow* rows_end,
+                                              const double* tables, const double* ux, const double* uy,
+                                              const double* uz, Vec3& u, Mat3& a) {
+  Vec3 um = Vec3::Zero(), s0 = Vec3::Zero(), s1 = Vec3::Zero(), s2 = Vec3::Zero();
+  for (const SupportRow* r = rows; r != rows_end; ++r) {
+    const double* m = tables + r->table;
+    const double* d = m + r->width;
+    const double* dd = d + r->width;
+    const std::size_t o = r->first;
+    const int n = r->count;
+    RowSums t;
+    with_fixed_length(
+        n, [&](auto len) { t = interpolate_run<decltype(len)::value>(m, d, dd, ux + o, uy + o, uz + o, n); },
+        std::make_integer_sequence<int, kMaxFixed>{});
+    // dy and dz are constant along the row: sum u d_y w_D = ydy sum u d (support_plan.hpp).
+    um += r->yz_m * Vec3(t.m0, t.m1, t.m2);
+    const Vec3 sd(t.d0, t.d1, t.d2);
+    s0 += r->yz_d * Vec3(t.t0, t.t1, t.t2);
+    s1 += r->ydy * sd;
+    s2 += r->ydz * sd;
+  }
+  u = um;
+  a.col(0) = s0;
+  a.col(1) = s1;
+  a.col(2) = s2;
+}
+
+}  // namespace
+
+void spread(const SupportPlan& plan, std::span<const Vec3> forces, std::span<const Mat3> dipoles, double* field,
+            std::size_t stride) {
+  const bool has_f = !forces.empty(), has_g = !dipoles.empty();
+  if (!has_f && !has_g) return;
+  const std::size_t count = plan.visits();
+  double* fx = field;
+  double* fy = field + stride;
+  double* fz = field + 2 * stride;
+  const double* tables = plan.tables.data();
+  const SupportRow* rows = plan.rows.data();
 #pragma omp parallel
   {
-  SupportTables tables;
-#pragma omp for schedule(dynamic, 16)
+    // Thread t owns z planes [z_begin, z_end): writes never collide.
+    const auto [z_begin, z_end] = balanced_slab(plan.plane_nodes, omp_get_thread_num(), omp_get_num_threads());
+    const auto zb = static_cast<std::uint32_t>(z_begin), ze = static_cast<std::uint32_t>(z_end);
+    const auto nz = static_cast<std::uint32_t>(plan.plane_nodes.size());
+    for (std::size_t k = 0; k < count; ++k) {
+      if (!plan.touches_planes(k, zb, ze, nz)) continue;
+      const std::size_t p = plan.particle[k];
+      const Vec3 f = has_f ? forces[p] : Vec3::Zero();
+      // d/dx_j Delta_D = -d_j / sigma_D^2 Delta_D, so G_ij d_j Delta_D = (G d)_i w_D (-1 / sigma_D^2).
+      const Mat3 gs = has_g ? Mat3(dipoles[p] * plan.dipole_scale[k]) : Mat3::Zero();
+      const SupportRow* begin = rows + plan.row_begin[k];
+      const SupportRow* end = rows + plan.row_end[k];
+      if (has_f)
+        spread_particle<true>(begin, end, tables, f, gs, zb, ze, fx, fy, fz);
+      else
+        spread_particle<false>(begin, end, tables, f, gs, zb, ze, fx, fy, fz);
+    }
+  }
+}
+
+void interpolate(const SupportPlan& plan, const double* field, std::size_t stride, std::span<Vec3> velocities,
+                 std::span<Mat3> gradient_moments) {
+  const bool want_u = !velocities.empty(), want_a = !gradient_moments.empty();
+  const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(plan.visits());
+  const double dv = plan.cell_volume;
+  const double* tables = plan.tables.data();
+  const SupportRow* rows = plan.rows.data();
+#pragma omp parallel for schedule(dynamic, 16)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
-    const std::size_t p = order.empty() ? static_cast<std::size_t>(k) : order[static_cast<std::size_t>(k)];
-    const Envelope& e = envelopes[p];
-    Vec3 u = Vec3::Zero();
-    Mat3 a = Mat3::Zero();
-    const double hx = grid.spacing.x();
-    visit_support(grid, e, 0, grid.n[2], tables, [&](const RowSegment& r) {
-      // Row sums of u w_m, u w_d and u w_d dx; dy and dz are constant along the row.
-      double um0 = 0, um1 = 0, um2 = 0, s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0, t2 = 0;
-      const double* px = ux + r.first;
-      const double* py = uy + r.first;
-      const double* pz = uz + r.first;
-      for (int i = 0; i < r.count; ++i) {
-        const double wm = r.yz_m * r.xm[i], wd = r.yz_d * r.xd[i], wdx = wd * (r.dx + i * hx);
-        um0 += px[i] * wm;
-        um1 += py[i] * wm;
-        um2 += pz[i] * wm;
-        s0 += px[i] * wd;
-        s1 += py[i] * wd;
-        s2 += pz[i] * wd;
-        t0 += px[i] * wdx;
-        t1 += py[i] * wdx;
-        t2 += pz[i] * wdx;
-      }
-      u += Vec3(um0, um1, um2);
-      const Vec3 s(s0, s1, s2);
-      a.col(0) += Vec3(t0, t1, t2);
-      a.col(1) += s * r.dy;
-      a.col(2) += s * r.dz;
-    });
+    const std::size_t ku = static_cast<std::size_t>(k);
+    Vec3 u;
+    Mat3 a;
+    interpolate_particle(rows + plan.row_begin[ku], rows + plan.row_end[ku], tables, field, field + stride,
+                         field + 2 * stride, u, a);
     // A_ij = sum u_i d_j Delta_D dV with d_j Delta_D = -d_j / sigma_D^2 Delta_D.
+    const std::size_t p = plan.particle[ku];
     if (want_u) velocities[p] = u * dv;
-    if (want_a) gradient_moments[p] = a * (-dv / (e.sigma_d * e.sigma_d));
+    if (want_a) gradient_moments[p] = a * (dv * plan.dipole_scale[ku]);
   }
-  }
+}
+
+void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::span<const Vec3> forces,
+            std::span<const Mat3> dipoles, double* field, std::size_t stride) {
+  spread(plan_support(grid, envelopes, grid_order(grid, envelopes)), forces, dipoles, field, stride);
+}
+
+void interpolate(const ShearedGrid& grid, std::span<const Envelope> envelopes, const double* field,
+                 std::size_t stride, std::span<Vec3> velocities, std::span<Mat3> gradient_moments) {
+  interpolate(plan_support(grid, envelopes, grid_order(grid, envelopes)), field, stride, velocities,
+              gradient_moments);
 }
 
 }  // namespace suspend::fcm

@@ -6,7 +6,8 @@
 // so that <f, u> dV = F.U + G:A exactly (the discrete adjoint, to round-off). Then
 //   Omega_k = (1/2) eps_kij A_ij  and  E_ij = -(A_ij + A_ji) / 2,  hence F.U + G:A = F.U + T.Omega - S:E.
 // The Gaussians are evaluated in physical distance on the sheared lattice and truncated on a sphere of radius
-// `support` (a fixed number of monopole widths). Units: lengths in a_1.
+// `support` (a fixed number of monopole widths); support_plan.hpp tabulates them once per configuration.
+// Units: lengths in a_1.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -15,6 +16,7 @@
 
 #include "core/vec.hpp"
 #include "fcm/sheared_grid.hpp"
+#include "fcm/support_plan.hpp"
 
 namespace suspend::fcm {
 
@@ -33,19 +35,20 @@ Vec3 angular_velocity_of(const Mat3& gradient_moment);
 Mat3 strain_rate_of(const Mat3& gradient_moment);
 
 // Adds the force density of all particles to the field (component c at field + c * stride). `forces` or
-// `dipoles` may be empty (treated as zero). OpenMP-parallel: each thread owns a slab of z planes, so no two
-// threads write the same node. `order` (optional) is the order in which particles are visited: a spatially
-// sorted order (grid_order) keeps the touched grid rows in cache.
-void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::span<const Vec3> forces,
-            std::span<const Mat3> dipoles, double* field, std::size_t stride,
-            std::span<const std::uint32_t> order = {});
+// `dipoles` may be empty (treated as zero); both are indexed by particle. OpenMP-parallel: each thread owns a slab
+// of z planes holding an equal share of the support nodes (plan.plane_nodes), so no two threads write the same
+// node. Particles are visited in the plan's (spatially sorted) order, which keeps the touched rows in cache.
+void spread(const SupportPlan& plan, std::span<const Vec3> forces, std::span<const Mat3> dipoles, double* field,
+            std::size_t stride);
 
 // Interpolates the velocity field onto every particle (velocities and/or gradient moments may be empty).
-void interpolate(const ShearedGrid& grid, std::span<const Envelope> envelopes, const double* field,
-                 std::size_t stride, std::span<Vec3> velocities, std::span<Mat3> gradient_moments,
-                 std::span<const std::uint32_t> order = {});
+void interpolate(const SupportPlan& plan, const double* field, std::size_t stride, std::span<Vec3> velocities,
+                 std::span<Mat3> gradient_moments);
 
-// Particle indices sorted by the grid block (8^3 nodes), then the grid node, of their centres.
-std::vector<std::uint32_t> grid_order(const ShearedGrid& grid, std::span<const Envelope> envelopes);
+// The same for a one-off configuration: plans the supports (support_plan.hpp), then spreads / interpolates.
+void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::span<const Vec3> forces,
+            std::span<const Mat3> dipoles, double* field, std::size_t stride);
+void interpolate(const ShearedGrid& grid, std::span<const Envelope> envelopes, const double* field,
+                 std::size_t stride, std::span<Vec3> velocities, std::span<Mat3> gradient_moments);
 
 }  // namespace suspend::fcm

@@ -1,0 +1,51 @@
+// One FCM Stokes solve at phi = 0.4 on a 64^3 grid (3129 spheres, h = a/2, same suspension as bench_fcm), for
+// deterministic instruction counts of its stages:
+//   OMP_NUM_THREADS=1 valgrind --tool=callgrind --collect-atstart=no
+//     --toggle-collect='suspend::fcm::Solver::apply*' build/bin/fcm_solve_once   (one command line)
+//   callgrind_annotate --inclusive=yes callgrind.out.<pid> | grep -E 'spread|interpolate|fftw_execute|green'
+// Args: [grid nodes per direction = 64] [volume fraction = 0.4] [solves = 1]. FFTW plans with FFTW_ESTIMATE (an
+// FFTW_MEASURE plan takes minutes under valgrind).
+#include <omp.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "fcm/solver.hpp"
+
+using namespace suspend;
+using namespace suspend::fcm;
+
+int main(int argc, char** argv) {
+  const int n = argc > 1 ? std::atoi(argv[1]) : 64;
+  const double phi = argc > 2 ? std::atof(argv[2]) : 0.4;
+  const int solves = argc > 3 ? std::atoi(argv[3]) : 1;
+  const double l = 0.5 * n;
+  const int np = static_cast<int>(phi * l * l * l / (4.0 / 3.0 * std::numbers::pi));
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, l), g(-1.0, 1.0);
+  std::vector<Vec3> pos, force, torque;
+  std::vector<double> rad;
+  std::vector<Mat3> stresslet;
+  for (int i = 0; i < np; ++i) {
+    pos.emplace_back(u(rng), u(rng), u(rng));
+    rad.push_back(1.0);
+    force.emplace_back(g(rng), g(rng), g(rng));
+    torque.emplace_back(g(rng), g(rng), g(rng));
+    Mat3 m;
+    for (int k = 0; k < 9; ++k) m(k / 3, k % 3) = g(rng);
+    stresslet.push_back(m + m.transpose());
+  }
+  SolverOptions opt;
+  opt.planning = FftPlanning::estimate;
+  Solver solver(Vec3::Constant(l), {n, n, n}, opt);
+  double check = 0.0;
+  for (int s = 0; s < solves; ++s) {
+    const Disturbance d = solver.apply(pos, rad, force, torque, stresslet, 1.3);
+    check += d.velocities[0].x();
+  }
+  std::printf("particles %d, u_0x %.12g\n", np, check / solves);
+  return 0;
+}
