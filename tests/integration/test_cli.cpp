@@ -128,7 +128,7 @@ TEST(Cli, KilledAndRestartedRunEndsBitIdentical) {
     if (fs::exists(b + "/checkpoint.h5")) {
       try {
         suspend::io::h5::File f = suspend::io::h5::File::open(b + "/checkpoint.h5", false);
-        if (suspend::io::h5::double_attribute(f.id(), ".", "strain") >= 0.2) {
+        if (suspend::io::h5::double_attribute(f.id(), ".", "strain") >= 0.1) {
           kill(pid, SIGKILL);
           killed = true;
           break;
