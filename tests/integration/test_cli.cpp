@@ -27,6 +27,18 @@ using namespace suspend::io;
 namespace {
 const std::string suspend_bin = SUSPEND_BINARY_DIR "/bin/suspend";
 const std::string restart_case = SUSPEND_SOURCE_DIR "/tests/data/restart_case.yaml";
+#ifdef NDEBUG
+const std::vector<std::string> lighter;  // Release: the case as written
+constexpr double kill_strain = 0.1;
+#else
+// Debug + sanitizers run about 30x slower: the same case, smaller and shorter, still killed mid-run.
+const std::vector<std::string> lighter = {"--set", "particles.count=50", "--set", "run.strain=0.2"};
+constexpr double kill_strain = 0.05;
+#endif
+std::vector<std::string> with_lighter(std::vector<std::string> args) {
+  args.insert(args.end(), lighter.begin(), lighter.end());
+  return args;
+}
 
 // Per-process scratch space: several builds (Release, sanitizers) may run this test at the same time.
 std::string scratch() {
@@ -118,17 +130,17 @@ TEST(Cli, CheckPrintsTheResolvedCaseWithDerivedValues) {
 
 TEST(Cli, KilledAndRestartedRunEndsBitIdentical) {
   const std::string a = fresh_dir("restart_a"), b = fresh_dir("restart_b");
-  ASSERT_EQ(run({"run", restart_case, "--out", a, "--threads", "2", "--quiet"}).code, 0);
+  ASSERT_EQ(run(with_lighter({"run", restart_case, "--out", a, "--threads", "2", "--quiet"})).code, 0);
 
   // Run B is killed with SIGKILL as soon as its second checkpoint exists, mid-run.
-  const pid_t pid = spawn({"run", restart_case, "--out", b, "--threads", "2", "--quiet"}, b + ".err");
+  const pid_t pid = spawn(with_lighter({"run", restart_case, "--out", b, "--threads", "2", "--quiet"}), b + ".err");
   const auto t0 = std::chrono::steady_clock::now();
   bool killed = false;
   while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(60)) {
     if (fs::exists(b + "/checkpoint.h5")) {
       try {
         suspend::io::h5::File f = suspend::io::h5::File::open(b + "/checkpoint.h5", false);
-        if (suspend::io::h5::double_attribute(f.id(), ".", "strain") >= 0.1) {
+        if (suspend::io::h5::double_attribute(f.id(), ".", "strain") >= kill_strain) {
           kill(pid, SIGKILL);
           killed = true;
           break;
@@ -143,7 +155,7 @@ TEST(Cli, KilledAndRestartedRunEndsBitIdentical) {
   ASSERT_EQ(code, 128 + SIGKILL) << "the run finished before it could be killed: make the case longer";
   EXPECT_FALSE(fs::exists(b + "/summary.json"));
 
-  const Result r = run({"run", restart_case, "--restart", b + "/checkpoint.h5", "--threads", "2", "--quiet"});
+  const Result r = run(with_lighter({"run", restart_case, "--restart", b + "/checkpoint.h5", "--threads", "2", "--quiet"}));
   ASSERT_EQ(r.code, 0) << r.err;
 
   h5::File fa = h5::File::open(a + "/checkpoint.h5", false), fb = h5::File::open(b + "/checkpoint.h5", false);
@@ -165,7 +177,7 @@ TEST(Cli, KilledAndRestartedRunEndsBitIdentical) {
 
 TEST(Cli, InterruptWritesACheckpointAndStopsCleanly) {
   const std::string c = fresh_dir("interrupt");
-  const pid_t pid = spawn({"run", restart_case, "--out", c, "--threads", "1", "--quiet"}, c + ".err");
+  const pid_t pid = spawn(with_lighter({"run", restart_case, "--out", c, "--threads", "1", "--quiet"}), c + ".err");
   const auto t0 = std::chrono::steady_clock::now();
   while (!fs::exists(c + "/checkpoint.h5") && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(60))
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
@@ -177,7 +189,7 @@ TEST(Cli, InterruptWritesACheckpointAndStopsCleanly) {
   s << err.rdbuf();
   EXPECT_NE(s.str().find("--restart"), std::string::npos) << s.str();
   EXPECT_TRUE(fs::exists(c + "/run.xdmf"));
-  const Result r = run({"run", restart_case, "--restart", c + "/checkpoint.h5", "--threads", "1", "--quiet"});
+  const Result r = run(with_lighter({"run", restart_case, "--restart", c + "/checkpoint.h5", "--threads", "1", "--quiet"}));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(fs::exists(c + "/summary.json"));
 }
