@@ -33,6 +33,8 @@ PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, co
   box_.set_strain(state_.strain);
   const Particles& p = state_.particles;
   const auto [a_min, a_max] = std::minmax_element(p.radius.begin(), p.radius.end());
+  a_min_ = *a_min;
+  for (double a : p.radius) radius_cubed_ += a * a * a;
   history_ = ContactHistory(p.size(), ContactHistory::capacity_for(*a_min, *a_max));
   history_.restore(state_.contacts);
   state_.contacts.clear();
@@ -84,7 +86,7 @@ void PairwiseSimulation::evaluate() {
                            scratch_);
   });
 
-  const double a_min = *std::min_element(p.radius.begin(), p.radius.end());
+  const double a_min = a_min_;
   if (sums_.max_overlap > params_.max_overlap * a_min) {
     std::ostringstream s;
     s << "overlap " << sums_.max_overlap << " a_1 between particles " << sums_.max_overlap_i << " and "
@@ -124,15 +126,13 @@ void PairwiseSimulation::evaluate() {
   // Stress: fluid + Stokes stresslets (hydrodynamic) and pair virials, per unit volume.
   Mat3 e_inf = Mat3::Zero();
   e_inf(0, 1) = e_inf(1, 0) = 0.5 * params_.shear_rate;
-  double a3 = 0.0;
-  for (double a : p.radius) a3 += a * a * a;
   const double volume = box_.volume();
   stress_ = sums_.virial;
   if (solver_) {
     stress_[Contribution::hydrodynamic] = solve_.stress[Contribution::hydrodynamic];
     stress_[Contribution::lubrication] = solve_.stress[Contribution::lubrication];
   } else {
-    stress_[Contribution::hydrodynamic] = (20.0 / 3.0) * pi * a3 * e_inf;
+    stress_[Contribution::hydrodynamic] = (20.0 / 3.0) * pi * radius_cubed_ * e_inf;
   }
   for (auto& m : stress_.part) m /= volume;
   stress_[Contribution::hydrodynamic] += 2.0 * e_inf;

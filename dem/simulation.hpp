@@ -95,7 +95,9 @@ class PairwiseSimulation {
   SimulationState state_;
   Box box_;
   SimulationParams params_;
-  double range_ = 0.0;  // largest gap at which a pair interacts
+  double range_ = 0.0;         // largest gap at which a pair interacts
+  double a_min_ = 1.0;         // smallest radius (overlap bound, time-step bound)
+  double radius_cubed_ = 0.0;  // sum of a^3, for the Stokes stresslets of the drag-only model
   VerletList list_;
   ContactHistory history_;
   std::vector<ActivePair> active_;

@@ -169,11 +169,6 @@ Case load_case(const std::string& path, const std::vector<std::string>& override
   return parse_case(root, path);
 }
 
-namespace {
-// Numbers printed in their shortest exact form (0.1, not 0.10000000000000001), still read back as numbers.
-YAML::Node number_node(double v) { return YAML::Node(exact(v)); }
-}  // namespace
-
 YAML::Node to_yaml(const Case& c) {
   YAML::Node n;
   if (!c.title.empty()) n["title"] = c.title;

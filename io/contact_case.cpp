@@ -46,7 +46,6 @@ SurfaceForces read_surface_forces(SchemaReader& r) {
   return s;
 }
 
-YAML::Node num(double v) { return YAML::Node(exact(v)); }
 }  // namespace
 
 ContactLaw read_contact(SchemaReader r) {
@@ -120,43 +119,43 @@ YAML::Node contact_to_yaml(const ContactLaw& law) {
         using C = std::decay_t<decltype(l.contact)>;
         const auto& c = l.contact;
         if constexpr (std::is_same_v<C, SoftRepulsion>) {
-          n["k_hat"] = num(k_hat_from_stiffness(c.p.kn));
+          n["k_hat"] = number_node(k_hat_from_stiffness(c.p.kn));
         } else if constexpr (std::is_same_v<C, HertzAdhesive>) {
           const HertzAdhesiveParams& p = c.params();
-          n["roughness"] = num(p.roughness);
-          n["eps_bar"] = num(p.eps_bar);
-          n["gamma_bar"] = num(6.0 * pi / (p.kn * std::pow(p.eps_bar * p.roughness, 1.5)));
-          n["g_adh"] = num(p.f_adh / (6.0 * pi));
-          n["mu_s"] = num(p.mu_s);
-          n["repulsion_onset"] = num(p.repulsion_onset);
-          n["repulsion_stiffness"] = num(p.repulsion_stiffness);
+          n["roughness"] = number_node(p.roughness);
+          n["eps_bar"] = number_node(p.eps_bar);
+          n["gamma_bar"] = number_node(6.0 * pi / (p.kn * std::pow(p.eps_bar * p.roughness, 1.5)));
+          n["g_adh"] = number_node(p.f_adh / (6.0 * pi));
+          n["mu_s"] = number_node(p.mu_s);
+          n["repulsion_onset"] = number_node(p.repulsion_onset);
+          n["repulsion_stiffness"] = number_node(p.repulsion_stiffness);
         } else {
-          n["k_hat"] = num(k_hat_from_stiffness(c.p.kn));
-          n["kt"] = num(c.p.kt);
-          n["gamma_n"] = num(c.p.gamma_n);
+          n["k_hat"] = number_node(k_hat_from_stiffness(c.p.kn));
+          n["kt"] = number_node(c.p.kt);
+          n["gamma_n"] = number_node(c.p.gamma_n);
           if constexpr (requires { c.friction.p.critical_load; }) {
             n["friction"] = "critical_load";
-            n["critical_load"] = num(c.friction.p.critical_load);
+            n["critical_load"] = number_node(c.friction.p.critical_load);
           } else {
             n["friction"] = c.friction.p.mu == 0.0 ? "none" : "coulomb";
           }
-          n["mu"] = num(c.friction.p.mu);
+          n["mu"] = number_node(c.friction.p.mu);
           if constexpr (requires { c.rolling.p.kr; }) {
-            n["rolling"]["kr"] = num(c.rolling.p.kr);
-            n["rolling"]["mu_r"] = num(c.rolling.p.mu_r);
+            n["rolling"]["kr"] = number_node(c.rolling.p.kr);
+            n["rolling"]["mu_r"] = number_node(c.rolling.p.mu_r);
           }
         }
         if (l.surface.repulsion) {
           const auto& p = l.surface.repulsion->p;
-          n["repulsion"]["force"] = num(p.force);
-          n["repulsion"]["debye_length"] = num(p.debye_length);
-          n["repulsion"]["cutoff_in_debye"] = num(p.cutoff_in_debye);
+          n["repulsion"]["force"] = number_node(p.force);
+          n["repulsion"]["debye_length"] = number_node(p.debye_length);
+          n["repulsion"]["cutoff_in_debye"] = number_node(p.cutoff_in_debye);
         }
         if (l.surface.attraction) {
           const auto& p = l.surface.attraction->p;
-          n["attraction"]["hamaker"] = num(p.hamaker);
-          n["attraction"]["epsilon"] = num(p.epsilon_rel);
-          n["attraction"]["cutoff"] = num(p.cutoff);
+          n["attraction"]["hamaker"] = number_node(p.hamaker);
+          n["attraction"]["epsilon"] = number_node(p.epsilon_rel);
+          n["attraction"]["cutoff"] = number_node(p.cutoff);
         }
       },
       law);

@@ -73,5 +73,7 @@ std::string closest_word(const std::string& word, const std::vector<std::string>
 
 // A double printed so that it reads back to the same bits.
 std::string exact(double v);
+// The same as a YAML scalar (0.1, not 0.10000000000000001), still read back as a number.
+inline YAML::Node number_node(double v) { return YAML::Node(exact(v)); }
 
 }  // namespace suspend::io
