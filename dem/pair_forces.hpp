@@ -46,7 +46,9 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
                             const Law& law, double dt, std::vector<PairHistory>& history, PairSums& sums,
                             std::vector<Vec3>& pair_force, std::vector<PairSums>& local) {
   const std::size_t n_particles = p.size();
-  const int nthreads = omp_get_max_threads();
+  // Small systems stay on one thread: a parallel region costs more than their whole loop (and far more when the
+  // cores are shared). The split depends only on the pair count, so results stay reproducible.
+  const int nthreads = active.size() >= 2048 ? omp_get_max_threads() : 1;
   local.resize(nthreads);
   pair_force.resize(active.size());
 #pragma omp parallel num_threads(nthreads)

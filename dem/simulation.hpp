@@ -1,11 +1,20 @@
-// The pairwise engine's simulation: particles in simple shear under Lees-Edwards boundaries, overdamped.
-// Each particle feels Stokes drag against the imposed flow (paper 000, eq. A.1 for a linear flow: the Faxen
-// terms vanish), optionally pairwise lubrication (paper 000 eq. 3, Appendix A), and the contact law (any law of
-// the shared contact module, with its pair history). With zero inertia the force balance is
-//   without lubrication:  U_i = U_inf(r_i) + F_i / (6 pi eta a_i),   Omega_i = Omega_inf + T_i / (8 pi eta a_i^3);
-//   with lubrication:     (R_Stokes + R_lub) dV = F_contact + R_FE : E_inf   (dem/integrate/resistance_solver.hpp).
+// The pairwise engine's simulation: particles in simple or wavy shear (paper 000 eq. 17) under Lees-Edwards
+// boundaries. Each particle feels Stokes drag with the Faxen terms against the imposed flow (paper 000 eq. A.1),
+// optionally pairwise lubrication (paper 000 eq. 3, Appendix A), and the contact law (any law of the shared contact
+// module, with its pair history).
+//
+// Overdamped (default, zero inertia), the force balance is
+//   without lubrication:  U_i = U_inf + (a^2/6) lap U_inf + F_i / (6 pi a_i),  Omega_i = Omega_inf + T_i / (8 pi a_i^3);
+//   with lubrication:     (R_Stokes + R_lub) dV = F_contact + R_FE : E_inf + F_Faxen  (dem/integrate/resistance_solver.hpp).
+// Inertial (finite Stokes number St = rho a_1^2 gammadot_ref / eta_0, paper 000 eq. 11), the modified velocity-Verlet
+// scheme of paper 000 eq. 15 with the hydrodynamic forces explicit at the half-step velocities:
+//   x^{n+1} = x^n + dt u^{n+1/2},  u^{n+1/2} = u^n + (dt/2) a^n,  a^{n+1} = F(x^{n+1}, u^{n+1/2}) / m,
+//   u^{n+1} = u^{n+1/2} + (dt/2) a^{n+1};   m = St (4/3) pi a^3, moment of inertia (2/5) m a^2.
+// Flow control: an imposed shear rate, or an imposed shear stress: with zero inertia velocities and stress are
+// linear in (gammadot, F_contact), Sigma_xy = gammadot Sigma_H + Sigma_C, so each step solves the rate-driven and the
+// force-driven problems and picks gammadot = (target - Sigma_C) / Sigma_H. Lees-Edwards follows the accumulated strain.
 // Bulk stress (paper 000, eqs. 8-9), in units of eta_0 gammadot_ref:
-//   Sigma = 2 eta E_inf + (1/V) [ sum_i (20/3) pi eta a_i^3 E_inf  +  sum_pairs -sym(d F_j^T) ],
+//   Sigma = 2 eta <E_inf> + (1/V) [ sum_i (20/3) pi eta a_i^3 (E_inf + (a^2/10) lap E_inf)  +  sum_pairs -sym(d F_j^T) ],
 // with F_j the contact and lubrication forces by contribution; eta_r = 1 + 2.5 phi for far-apart spheres.
 // Units: eta_0 = 1, lengths in a_1, time in 1/gammadot_ref.
 //
@@ -34,13 +43,22 @@ struct TimeStepParams {
   Mode mode = Mode::adaptive;
   double fixed = 1.0e-3;             // time step when mode == fixed (1/gammadot)
   double max_displacement = 2.0e-3;  // adaptive: largest non-affine displacement per step (a_1)
-  double max = 1.0e-2;               // adaptive: upper bound (1/gammadot)
-  double stability = 0.2;            // dt <= stability * (drag relaxation time of the stiffest contact)
+  double max = 1.0e-2;               // adaptive: largest strain increment per step, gammadot dt
+  double stability = 0.2;            // dt <= stability * (fastest relaxation or oscillation time)
   void validate() const;
 };
 
+enum class FlowControl { rate, stress };
+enum class Integrator { overdamped, inertial };
+
 struct SimulationParams {
-  double shear_rate = 1.0;  // gammadot / gammadot_ref
+  double shear_rate = 1.0;                  // gammadot / gammadot_ref: imposed, or the first step's under stress control
+  FlowControl control = FlowControl::rate;  // imposed shear rate or imposed shear stress
+  double shear_stress = 1.0;                // stress control: target Sigma_xy (eta_0 gammadot_ref)
+  double wave_amplitude = 0.0;              // wavy shear (paper 000 eq. 17): U (gammadot_ref a_1)
+  int wave_periods = 0;                     // n, periods across L_y
+  Integrator integrator = Integrator::overdamped;
+  double stokes_number = 1.0e-3;            // inertial: St = rho a_1^2 gammadot_ref / eta_0 (the density in code units)
   ContactLaw contact = ComposedLaw<SoftRepulsion>{};
   bool lubrication = false;           // pairwise lubrication and the resistance solve, else Stokes drag alone
   ResistanceSolverParams resistance;  // lubrication cutoffs and the linear solver
@@ -57,9 +75,14 @@ struct SimulationState {
   double strain = 0.0;
   std::int64_t step = 0;
   double last_dt = 0.0;  // time step of the last advance: frictional springs integrate the last velocities over it
+  double shear_rate = 0.0;  // shear rate of the last advance (Lees-Edwards image velocity); 0: the imposed one
+  // Inertial integrator: per particle 12 numbers, half-step velocity and angular velocity u^{n+1/2}, w^{n+1/2},
+  // then acceleration and angular acceleration a^n, alpha^n. Empty when overdamped (or before the first step).
+  std::vector<double> verlet;
   // Stored contact histories (tangential and rolling stretch) of the pairs in contact.
   std::vector<ContactHistory::Entry> contacts;
-  // The resistance solver's last disturbance velocities (its warm start), 6 per particle; empty without lubrication.
+  // The resistance solvers' last disturbance velocities (their warm starts), 6 per particle (12 under stress
+  // control: the rate-driven then the force-driven problem); empty without lubrication.
   std::vector<double> warm_start;
 };
 
@@ -77,7 +100,8 @@ class PairwiseSimulation {
   const SimulationState& state() const { return state_; }
   const Box& box() const { return box_; }
   const SimulationParams& params() const { return params_; }
-  double shear_rate() const { return params_.shear_rate; }
+  // Shear rate of the current step (the imposed one, or the one the stress control chose).
+  double shear_rate() const { return rate_; }
   double time_step() const { return dt_; }
   const StressTensors& stress() const { return stress_; }
   double max_overlap() const { return sums_.max_overlap; }
@@ -89,8 +113,14 @@ class PairwiseSimulation {
   const std::vector<Vec3>& pair_forces() const { return pair_force_; }
 
  private:
-  Vec3 ambient_velocity(const Vec3& r) const { return {params_.shear_rate * r.y(), 0.0, 0.0}; }
+  hydro::WavyShear flow(double rate) const {
+    return {rate, params_.wave_amplitude, params_.wave_periods, box_.length().y()};
+  }
   [[noreturn]] void fail(const std::string& what) const;
+  void contact_forces(double image_velocity);
+  double overdamped_velocities();  // returns the largest non-affine speed
+  double inertial_velocities();
+  void finish_stress(double rate);
 
   SimulationState state_;
   Box box_;
@@ -107,7 +137,14 @@ class PairwiseSimulation {
   std::vector<double> species_radius_;  // distinct radii
   std::vector<int> species_;            // index into species_radius_ per particle
   std::optional<ResistanceSolver> solver_;
-  SolveResult solve_;
+  std::optional<ResistanceSolver> force_solver_;  // stress control: the force-driven problem (own warm start)
+  SolveResult solve_, force_solve_;
+  Eigen::VectorXd disturbance_, hydro_force_;
+  std::vector<Vec3> zero_;
+  std::vector<double> mass_, moment_;
+  std::vector<double> acceleration_;  // inertial: a^{n+1}, alpha^{n+1} of the current evaluation (6 per particle)
+  double relaxation_rate_ = 0.0;      // inertial: bound on the fastest hydrodynamic relaxation rate
+  double rate_ = 1.0;
   PairSums sums_;
   std::vector<PairSums> scratch_;
   std::vector<Vec3> nonaffine_;

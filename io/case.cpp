@@ -91,8 +91,20 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
 
   {
     SchemaReader f = top.child("flow");
-    c.flow = f.choice("type", "simple_shear", {"simple_shear"});
-    c.simulation.shear_rate = f.number("shear_rate", 1.0, Range::positive());
+    SimulationParams& s = c.simulation;
+    c.flow = f.choice("type", "simple_shear", {"simple_shear", "wavy"});
+    s.control = f.choice("control", "rate", {"rate", "stress"}) == "stress" ? FlowControl::stress : FlowControl::rate;
+    s.shear_rate = f.number("shear_rate", 1.0, Range::positive());
+    if (s.control == FlowControl::stress) {
+      s.shear_stress = f.number("shear_stress", Range::positive());
+      if (c.flow == "wavy") f.fail("control", "stress control is available for flow.type = simple_shear only");
+    } else if (f.has("shear_stress")) {
+      f.fail("shear_stress", "is the target of flow.control = stress; with control = rate give shear_rate only");
+    }
+    if (c.flow == "wavy") {
+      s.wave_amplitude = f.number("amplitude", Range{});
+      s.wave_periods = static_cast<int>(f.integer("periods", 1, 1, 1'000'000));
+    }
     f.finish();
   }
   {
@@ -131,6 +143,16 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     c.run.threads = r.integer("threads", 0, 0, 4096);
     c.simulation.max_overlap = r.number("max_overlap", c.simulation.max_overlap, Range::open_closed(0.0, 1.0));
     c.simulation.skin = r.number("skin", c.simulation.skin, Range::positive());
+    c.simulation.integrator = r.choice("integrator", "overdamped", {"overdamped", "inertial"}) == "inertial"
+                                  ? Integrator::inertial
+                                  : Integrator::overdamped;
+    if (c.simulation.integrator == Integrator::inertial) {
+      c.simulation.stokes_number = r.number("stokes_number", c.simulation.stokes_number, Range::positive());
+      if (c.simulation.control == FlowControl::stress)
+        r.fail("integrator", "inertial is not available with flow.control = stress (use overdamped)");
+    } else if (r.has("stokes_number")) {
+      r.fail("stokes_number", "applies to run.integrator = inertial only");
+    }
 
     SchemaReader t = r.child("time_step");
     TimeStepParams& ts = c.simulation.time_step;
@@ -190,7 +212,13 @@ YAML::Node to_yaml(const Case& c) {
     n["box"]["length"]["z"] = number_node(c.box->z());
   }
   n["flow"]["type"] = c.flow;
+  n["flow"]["control"] = c.simulation.control == FlowControl::stress ? "stress" : "rate";
   n["flow"]["shear_rate"] = number_node(c.simulation.shear_rate);
+  if (c.simulation.control == FlowControl::stress) n["flow"]["shear_stress"] = number_node(c.simulation.shear_stress);
+  if (c.flow == "wavy") {
+    n["flow"]["amplitude"] = number_node(c.simulation.wave_amplitude);
+    n["flow"]["periods"] = c.simulation.wave_periods;
+  }
   n["hydrodynamics"]["model"] = c.hydrodynamics;
   {
     const ResistanceSolverParams& rs = c.simulation.resistance;
@@ -214,6 +242,8 @@ YAML::Node to_yaml(const Case& c) {
   r["threads"] = c.run.threads;
   r["max_overlap"] = number_node(c.simulation.max_overlap);
   r["skin"] = number_node(c.simulation.skin);
+  r["integrator"] = c.simulation.integrator == Integrator::inertial ? "inertial" : "overdamped";
+  if (c.simulation.integrator == Integrator::inertial) r["stokes_number"] = number_node(c.simulation.stokes_number);
   const TimeStepParams& ts = c.simulation.time_step;
   r["time_step"]["mode"] = ts.mode == TimeStepParams::Mode::fixed ? "fixed" : "adaptive";
   r["time_step"]["fixed"] = number_node(ts.fixed);

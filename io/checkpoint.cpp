@@ -49,6 +49,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
     h5::set_attribute(id, ".", "time", c.state.time);
     h5::set_attribute(id, ".", "strain", c.state.strain);
     h5::set_attribute(id, ".", "last_dt", c.state.last_dt);
+    h5::set_attribute(id, ".", "shear_rate", c.state.shear_rate);
     const auto& contacts = c.state.contacts;
     std::vector<std::int64_t> pairs;
     std::vector<double> stretch;
@@ -60,6 +61,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
     h5::write(id, "contacts/pairs", pairs, {contacts.size(), 2});
     h5::write(id, "contacts/stretch", stretch, {contacts.size(), 6});
     h5::write(id, "solver/warm_start", c.state.warm_start, {c.state.warm_start.size()});
+    h5::write(id, "integrator/verlet", c.state.verlet, {c.state.verlet.size()});
     h5::set_attribute(id, ".", "next_series", c.clock.next_series);
     h5::set_attribute(id, ".", "next_snapshot", c.clock.next_snapshot);
     h5::set_attribute(id, ".", "next_checkpoint", c.clock.next_checkpoint);
@@ -86,12 +88,13 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     c.state.time = h5::double_attribute(id, ".", "time");
     c.state.strain = h5::double_attribute(id, ".", "strain");
     c.state.last_dt = h5::double_attribute(id, ".", "last_dt");
+    c.state.shear_rate = h5::double_attribute(id, ".", "shear_rate");
     c.clock.next_series = h5::double_attribute(id, ".", "next_series");
     c.clock.next_snapshot = h5::double_attribute(id, ".", "next_snapshot");
     c.clock.next_checkpoint = h5::double_attribute(id, ".", "next_checkpoint");
     c.clock.series_rows = h5::int_attribute(id, ".", "series_rows");
     c.clock.snapshots = h5::int_attribute(id, ".", "snapshots");
-    for (double v : {c.state.time, c.state.strain, c.state.last_dt, c.clock.next_series, c.clock.next_snapshot, c.clock.next_checkpoint})
+    for (double v : {c.state.time, c.state.strain, c.state.last_dt, c.state.shear_rate, c.clock.next_series, c.clock.next_snapshot, c.clock.next_checkpoint})
       if (!std::isfinite(v)) throw InputError(path + ": time, strain or output clock is not finite");
     Particles& p = c.state.particles;
     p.radius = h5::read_doubles(id, "particles/radius");
@@ -106,10 +109,16 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     if (species.size() != n) throw InputError(path + ": particles/species has the wrong size");
     p.species.assign(species.begin(), species.end());
     c.state.warm_start = h5::read_doubles(id, "solver/warm_start");
-    if (!c.state.warm_start.empty() && c.state.warm_start.size() != 6 * n)
+    const std::size_t warm = c.state.warm_start.size();
+    if (warm != 0 && warm != 6 * n && warm != 12 * n)
       throw InputError(path + ": solver/warm_start does not match the particle count");
     for (double v : c.state.warm_start)
       if (!std::isfinite(v)) throw InputError(path + ": solver/warm_start is not finite");
+    c.state.verlet = h5::read_doubles(id, "integrator/verlet");
+    if (!c.state.verlet.empty() && c.state.verlet.size() != 12 * n)
+      throw InputError(path + ": integrator/verlet does not match the particle count");
+    for (double v : c.state.verlet)
+      if (!std::isfinite(v)) throw InputError(path + ": integrator/verlet is not finite");
     const std::vector<std::int64_t> pairs = h5::read_ints(id, "contacts/pairs");
     const std::vector<double> stretch = h5::read_doubles(id, "contacts/stretch");
     if (stretch.size() != 3 * pairs.size()) throw InputError(path + ": contacts/stretch does not match contacts/pairs");

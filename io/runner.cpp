@@ -141,8 +141,7 @@ int run_case(const Case& c, const RunOptions& o) {
 
   auto wall0 = std::chrono::steady_clock::now();
   install_stop_handlers();
-  double eta_sum = 0.0;
-  long eta_count = 0;
+  double stress_sum = 0.0, rate_sum = 0.0;  // running eta_r = <Sigma_xy> / <gammadot>
   try {
     for (;;) {
       sim.evaluate();
@@ -161,8 +160,8 @@ int run_case(const Case& c, const RunOptions& o) {
         file.append(row);
         clock.next_series = next_multiple(strain, every.series_every);
         if (strain >= c.run.average_from) {
-          eta_sum += row.stress.total()(0, 1) / row.shear_rate;
-          ++eta_count;
+          stress_sum += row.stress.total()(0, 1);
+          rate_sum += row.shear_rate;
         }
       }
       if (strain >= clock.next_snapshot - eps) {
@@ -170,7 +169,7 @@ int run_case(const Case& c, const RunOptions& o) {
         clock.next_snapshot = next_multiple(strain, every.snapshot_every);
       }
       progress.update(strain, sim.state().step,
-                      eta_count ? eta_sum / eta_count : sim.stress().total()(0, 1) / sim.shear_rate());
+                      rate_sum != 0.0 ? stress_sum / rate_sum : sim.stress().total()(0, 1) / sim.shear_rate());
       if (strain >= c.run.strain - eps) break;
 
       sim.advance();
@@ -203,10 +202,15 @@ int run_case(const Case& c, const RunOptions& o) {
   finish_outputs();
   const nlohmann::json summary =
       summarize(file.id(), {sim.state().particles.volume() / sim.box().volume(), sim.state().particles.size(),
-                            c.run.average_from});
+                            c.run.average_from, c.simulation.control == FlowControl::stress,
+                            adhesion_force(c.simulation.contact)});
   write_text_atomically(join(dir, "summary.json"), summary.dump(2) + "\n");
   file.close();
   const auto& eta = summary["eta_r"];
+  if (summary.contains("sigma_star"))
+    std::printf("sigma* = %.5g +- %.2g   G_adh = %.4g +- %.2g\n", summary["sigma_star"]["mean"].get<double>(),
+                summary["sigma_star"]["sem"].get<double>(), summary["G_adh"]["mean"].get<double>(),
+                summary["G_adh"]["sem"].get<double>());
   std::printf("eta_r = %.5g +- %.2g   N1 = %.4g +- %.2g   N2 = %.4g +- %.2g   Pi = %.4g +- %.2g   (strain %.3g-%.3g, %zu samples)\n",
               eta["mean"].get<double>(), eta["sem"].get<double>(), summary["N1"]["mean"].get<double>(),
               summary["N1"]["sem"].get<double>(), summary["N2"]["mean"].get<double>(),

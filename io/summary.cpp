@@ -1,5 +1,7 @@
 #include "io/summary.hpp"
 
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "core/stress.hpp"
@@ -11,22 +13,30 @@ namespace suspend::io {
 namespace {
 nlohmann::json entry(const MeanWithError& m) { return {{"mean", m.mean}, {"sem", m.sem}}; }
 
-// eta_r, N1, N2, Pi of one stress series (columns xx yy zz xy xz yz), normalised by the shear rate of each row.
+// eta_r, N1, N2, Pi of one stress series (columns xx yy zz xy xz yz). Under an imposed rate each row is divided by
+// its own shear rate; under an imposed stress the window means are divided by the mean rate, and the rate's
+// standard error is propagated (first order, independent errors).
 nlohmann::json observables(hid_t f, const std::string& series, const std::vector<double>& rate,
-                           const std::vector<std::size_t>& window) {
+                           const std::vector<std::size_t>& window, const MeanWithError* mean_rate) {
   std::vector<std::vector<double>> c(6);
   for (int k = 0; k < 6; ++k) c[k] = read_series(f, series, k);
   std::vector<double> eta, n1, n2, pi;
   for (std::size_t r : window) {
-    eta.push_back(c[3][r] / rate[r]);
-    n1.push_back((c[0][r] - c[1][r]) / rate[r]);
-    n2.push_back((c[1][r] - c[2][r]) / rate[r]);
-    pi.push_back(-(c[0][r] + c[1][r] + c[2][r]) / 3.0 / rate[r]);
+    const double g = mean_rate ? 1.0 : rate[r];
+    eta.push_back(c[3][r] / g);
+    n1.push_back((c[0][r] - c[1][r]) / g);
+    n2.push_back((c[1][r] - c[2][r]) / g);
+    pi.push_back(-(c[0][r] + c[1][r] + c[2][r]) / 3.0 / g);
   }
-  return {{"eta_r", entry(block_average(eta))},
-          {"N1", entry(block_average(n1))},
-          {"N2", entry(block_average(n2))},
-          {"Pi", entry(block_average(pi))}};
+  auto scaled = [&](const std::vector<double>& v) {
+    MeanWithError m = block_average(v);
+    if (mean_rate) {
+      const double g = mean_rate->mean, sg = mean_rate->sem;
+      m = {m.mean / g, std::hypot(m.sem / g, m.mean * sg / (g * g))};
+    }
+    return entry(m);
+  };
+  return {{"eta_r", scaled(eta)}, {"N1", scaled(n1)}, {"N2", scaled(n2)}, {"Pi", scaled(pi)}};
 }
 }  // namespace
 
@@ -37,20 +47,36 @@ nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
   for (std::size_t r = 0; r < strain.size(); ++r)
     if (strain[r] >= ctx.average_from) window.push_back(r);
   nlohmann::json j;
-  j["note"] = "normal stresses and pressure are divided by eta_0 times the shear rate of each sample";
+  std::vector<double> window_rate;
+  for (std::size_t r : window) window_rate.push_back(rate[r]);
+  const MeanWithError mean_rate = block_average(window_rate);
+  const MeanWithError* by_mean = ctx.stress_control ? &mean_rate : nullptr;
+  j["note"] = ctx.stress_control
+                  ? "imposed shear stress: stresses are divided by eta_0 times the mean shear rate of the window"
+                  : "normal stresses and pressure are divided by eta_0 times the shear rate of each sample";
+  j["shear_rate"] = entry(mean_rate);
   j["phi"] = ctx.phi;
   j["particles"] = ctx.particles;
   j["window"] = {{"from_strain", ctx.average_from}, {"to_strain", strain.empty() ? 0.0 : strain.back()}};
   j["samples"] = window.size();
-  const nlohmann::json total = observables(f, "stress/total", rate, window);
+  const nlohmann::json total = observables(f, "stress/total", rate, window, by_mean);
   for (const auto& [k, v] : total.items()) j[k] = v;
   for (auto name : contribution_names)
-    j["contributions"][std::string(name)] = observables(f, "stress/" + std::string(name), rate, window);
+    j["contributions"][std::string(name)] = observables(f, "stress/" + std::string(name), rate, window, by_mean);
   std::vector<double> contacts = read_series(f, "contacts"), overlap = read_series(f, "max_overlap");
   std::vector<double> wc, wo;
   for (std::size_t r : window) wc.push_back(contacts[r]), wo.push_back(overlap[r]);
   j["contacts"] = entry(block_average(wc));
   j["max_overlap"] = entry(block_average(wo));
+  if (ctx.adhesion_force > 0.0) {
+    // Paper 004: sigma* = 6 pi Sigma_xy a_1^2 / F_adh, G_adh = F_adh / (6 pi eta_0 a_1^2 gammadot).
+    const std::vector<double> sxy = read_series(f, "stress/total", 3);
+    std::vector<double> sigma_star;
+    for (std::size_t r : window) sigma_star.push_back(6.0 * std::numbers::pi * sxy[r] / ctx.adhesion_force);
+    j["sigma_star"] = entry(block_average(sigma_star));
+    const double g = ctx.adhesion_force / (6.0 * std::numbers::pi);
+    j["G_adh"] = entry({g / mean_rate.mean, g * mean_rate.sem / (mean_rate.mean * mean_rate.mean)});
+  }
   return j;
 }
 

@@ -12,6 +12,10 @@ struct SummaryContext {
   double phi = 0.0;
   std::size_t particles = 0;
   double average_from = 0.0;
+  // Imposed shear stress: eta_r, N1, N2, Pi are divided by the mean shear rate of the window (not row by row).
+  bool stress_control = false;
+  // F_adh of adhesive contacts (0: none); adds sigma* = 6 pi Sigma_xy a_1^2 / F_adh and G_adh.
+  double adhesion_force = 0.0;
 };
 
 nlohmann::json summarize(hid_t run_file, const SummaryContext& context);

@@ -102,4 +102,17 @@ void evaluate_pairs(const ContactLaw& law, std::size_t begin, std::size_t end, d
       law);
 }
 
+// The constant adhesion force F_adh of the Hertz-adhesive law (paper 004 eq. 16), 0 for laws without adhesion:
+// it sets the stress scale sigma* = 6 pi Sigma_xy a_1^2 / F_adh and G_adh = F_adh / (6 pi eta a_1^2 gammadot).
+inline double adhesion_force(const ContactLaw& law) {
+  return std::visit(
+      [](const auto& l) -> double {
+        if constexpr (std::is_same_v<std::decay_t<decltype(l.contact)>, HertzAdhesive>)
+          return l.contact.pull_off_force();
+        else
+          return 0.0;
+      },
+      law);
+}
+
 }  // namespace suspend

@@ -1,6 +1,7 @@
 // Assembly, solve and stress of the overdamped resistance problem; equations and conventions in the header.
 #include "dem/integrate/resistance_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -162,6 +163,43 @@ void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species
   }
   out.lubricated_pairs = lubricated_;
   accumulate_stress(p, species, pairs, flow, out);
+}
+
+void ResistanceSolver::explicit_forces(const Particles& p, const std::vector<int>& species,
+                                       const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
+                                       const Eigen::VectorXd& dv, Eigen::VectorXd& force, SolveResult& out) {
+  const std::size_t n = p.size();
+  if (species.size() != n || dv.size() != 6 * static_cast<Eigen::Index>(n))
+    throw InputError("resistance solver: species and dv need one entry (dv: six) per particle");
+  zero_.assign(n, Vec3::Zero());
+  assemble(p, species, pairs, flow, zero_, zero_);
+  matrix_.multiply(dv, check_);
+  force = rhs_ - check_;
+  previous_ = dv;
+  out.iterations = 0;
+  out.residual = 0.0;
+  out.velocity.resize(n);
+  out.angular_velocity.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto d = dv.segment<6>(6 * static_cast<Eigen::Index>(i));
+    out.velocity[i] = flow.velocity(p.position[i]) + d.head<3>();
+    out.angular_velocity[i] = flow.angular_velocity(p.position[i]) + d.tail<3>();
+  }
+  out.lubricated_pairs = lubricated_;
+  accumulate_stress(p, species, pairs, flow, out);
+}
+
+double ResistanceSolver::relaxation_rate(const std::vector<double>& mass, const std::vector<double>& moment) const {
+  double rate = 0.0;
+  for (std::size_t i = 0; i < matrix_.block_rows(); ++i) {
+    Vector6 row = matrix_.diagonal()[i].cwiseAbs().rowwise().sum();
+    for (const auto* e = matrix_.row_begin(i); e != matrix_.row_end(i); ++e) {
+      const Matrix6& c = matrix_.coupling()[e->link];
+      row += e->transposed ? Vector6(c.transpose().cwiseAbs().rowwise().sum()) : Vector6(c.cwiseAbs().rowwise().sum());
+    }
+    rate = std::max({rate, row.head<3>().maxCoeff() / mass[i], row.tail<3>().maxCoeff() / moment[i]});
+  }
+  return rate;
 }
 
 void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<int>& species,

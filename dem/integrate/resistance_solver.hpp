@@ -86,6 +86,17 @@ class ResistanceSolver {
              const std::vector<Vec3>& force, const std::vector<Vec3>& torque, SolveResult& out,
              std::string_view context = {});
 
+  // Inertial integrator (paper 000 eq. 15): the hydrodynamic force and torque at given disturbance velocities
+  // dv (6 per particle, lab velocity minus U_inf, Omega_inf), explicitly:
+  //   F_H = R_FE : E_inf + F_Faxen - (R_Stokes + R_lub) dv,
+  // with `out` holding dv as lab velocities and the stress sums as solve() reports them. Replaces the warm start.
+  void explicit_forces(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
+                       const hydro::WavyShear& flow, const Eigen::VectorXd& dv, Eigen::VectorXd& force,
+                       SolveResult& out);
+  // Largest eigenvalue bound of M^-1 R for the matrix of the last call (Gershgorin: max over rows of the absolute
+  // row sum divided by that row's mass or moment of inertia): the explicit scheme is stable for dt < 2 / rate.
+  double relaxation_rate(const std::vector<double>& mass, const std::vector<double>& moment) const;
+
   // Drops the warm start (e.g. after a change of the particle set).
   void forget_warm_start() { previous_.resize(0); }
   // Sets the warm start (a checkpointed disturbance(), so that a restart continues bit for bit).
@@ -119,6 +130,7 @@ class ResistanceSolver {
 
   SymmetricBlockMatrix matrix_;
   Eigen::VectorXd rhs_, previous_, check_;
+  std::vector<Vec3> zero_;
   PreconditionedConjugateGradient cg_;
   PatternCholesky cholesky_;
   std::vector<Mat3> pair_stress_;
