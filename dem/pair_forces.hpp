@@ -49,6 +49,8 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
   const int nthreads = omp_get_max_threads();
   local.resize(nthreads);
   pair_force.resize(active.size());
+  sums.force.resize(n_particles);
+  sums.torque.resize(n_particles);
 #pragma omp parallel num_threads(nthreads)
   {
     const int t = omp_get_thread_num();
@@ -81,17 +83,23 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
         mine.max_overlap_j = pr.j;
       }
     }
+    // Per-particle sums over the threads, in thread order (the same order for every particle split).
+#pragma omp barrier
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(n_particles); ++i) {
+      Vec3 f = Vec3::Zero(), tq = Vec3::Zero();
+      for (const PairSums& l : local) {
+        f += l.force[i];
+        tq += l.torque[i];
+      }
+      sums.force[i] = f;
+      sums.torque[i] = tq;
+    }
   }
-  sums.force.assign(n_particles, Vec3::Zero());
-  sums.torque.assign(n_particles, Vec3::Zero());
   sums.virial.clear();
   sums.max_overlap = 0.0;
   sums.contacts = 0;
   for (const PairSums& l : local) {
-    for (std::size_t i = 0; i < n_particles; ++i) {
-      sums.force[i] += l.force[i];
-      sums.torque[i] += l.torque[i];
-    }
     for (std::size_t c = 0; c < contribution_count; ++c) sums.virial.part[c] += l.virial.part[c];
     sums.contacts += l.contacts;
     if (l.max_overlap > sums.max_overlap) {
