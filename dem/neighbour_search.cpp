@@ -12,7 +12,7 @@ bool within(const Box& box, const Vec3& ri, const Vec3& rj, double reach) {
   return box.minimum_image(ri, rj).d.squaredNorm() < reach * reach;
 }
 int mod(int a, int n) { return ((a % n) + n) % n; }
-constexpr std::size_t parallel_particles = 4096;
+constexpr std::size_t parallel_particles = 1024;  // below this, threads cost more than they save
 }  // namespace
 
 void find_pairs_brute_force(const std::vector<Vec3>& position, const std::vector<double>& radius, const Box& box,
@@ -76,7 +76,8 @@ void CellListSearch::find_pairs(const std::vector<Vec3>& position, const std::ve
         for (std::uint32_t t = t0; t < start_[other + 1]; ++t) {
           const std::uint32_t q = order_[t];
           if (full && q <= p) continue;
-          if (within(box, rp, position[q], ap + radius[q] + gap_cutoff)) mine.push_back({std::min(p, q), std::max(p, q)});
+          if (within(box, rp, position[q], ap + radius[q] + gap_cutoff))
+            mine.push_back({std::min(p, q), std::max(p, q)});
         }
       }
     };

@@ -1,7 +1,7 @@
 // O(N)-memory contact history store (paper 000 section 2.1): insert/lookup/release, orientation of the stored
-// stretch, sorted bounded rows, paper 000's capacity estimate, memory proportional to the contacts, carrying histories across a neighbour-list rebuild
-// with a different pair order, and a frictional contact that keeps its history while its particles wrap through
-// the periodic (Lees-Edwards) faces.
+// stretch, sorted bounded rows, paper 000's capacity estimate, memory proportional to the contacts, restore from
+// checkpoint entries, carrying histories across a neighbour-list rebuild with a different pair order, and a
+// frictional contact that keeps its history while its particles wrap through the periodic (Lees-Edwards) faces.
 #include <gtest/gtest.h>
 
 #include <algorithm>

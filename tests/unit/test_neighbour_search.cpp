@@ -81,11 +81,11 @@ TEST(NeighbourSearch, FullStencilListsTheSamePairs) {
 }
 
 TEST(NeighbourSearch, SameListForAnyThreadCount) {
-  // 6000 particles: binning and the final ordering both run in parallel.
-  const Vec3 L(40.0, 40.0, 40.0);
+  // 1500 particles: binning and the final ordering both run in parallel (above 1024 particles).
+  const Vec3 L(25.0, 25.0, 25.0);
   Box box(L);
   box.set_shear_offset(0.21 * L.x());
-  const Config c = random_config(6000, L, 1.4, 5);
+  const Config c = random_config(1500, L, 1.4, 5);
   std::vector<NeighbourPair> one, two, slow;
   CellListSearch search;
   omp_set_num_threads(1);
