@@ -8,7 +8,10 @@
 //    histories (paper 000 Table 1 parameters) on N = 8000 packed spheres whose radii are inflated by 1%, so that
 //    near neighbours overlap; all pairs within the lubrication range 0.25 a_1 are evaluated. items/s = pairs/s.
 //  BM_ContactForcesThreadRatio: the same loop timed alternately on 1 and 2 threads inside one run (the minimum of
-//    each over the iterations), so load changes hit both equally; counter speedup = t(1) / t(2).
+//    each over the iterations), so load changes hit both equally; counter speedup = t(1) / t(2). On a loaded
+//    machine the wall clock mostly measures the other processes, so the process CPU time of each batch is also
+//    given: cpu_ratio = cpu(2 threads) / cpu(1 thread) is the work the second thread adds (1 = no overhead), and
+//    speedup_bound = 2 / cpu_ratio the speedup two idle cores would give if the work is split evenly.
 //  BM_LubricationAssembly/<threads>: the resistance solver's assembly, preconditioner set-up, residual check and
 //    stress for the same configuration, with a warm start that is already the solution (0 CG iterations); items/s =
 //    lubricated pairs/s.
@@ -19,6 +22,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <map>
 #include <random>
 
@@ -142,23 +146,33 @@ void BM_ContactForces(benchmark::State& state) {
 void BM_ContactForcesThreadRatio(benchmark::State& state) {
   const Packed& c = packed();
   ForceLoop one(c.active.size()), two(c.active.size());
-  double best1 = 1e30, best2 = 1e30;
-  auto timed = [&](ForceLoop& loop, int threads) {
+  double best1 = 1e30, best2 = 1e30, cpu1 = 1e30, cpu2 = 1e30;
+  auto cpu_now = [] {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+  };
+  auto timed = [&](ForceLoop& loop, int threads, double& best, double& cpu) {
     omp_set_num_threads(threads);
+    const double c0 = cpu_now();
     const auto t0 = std::chrono::steady_clock::now();
     for (int r = 0; r < 20; ++r) loop.run(c);
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / 20;
+    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / 20);
+    cpu = std::min(cpu, (cpu_now() - c0) / 20);
   };
-  timed(one, 1);
-  timed(two, 2);
+  double unused_wall = 0.0, unused_cpu = 0.0;
+  timed(one, 1, unused_wall, unused_cpu);
+  timed(two, 2, unused_wall, unused_cpu);
   for (auto _ : state) {
-    best1 = std::min(best1, timed(one, 1));
-    best2 = std::min(best2, timed(two, 2));
+    timed(one, 1, best1, cpu1);
+    timed(two, 2, best2, cpu2);
   }
   omp_set_num_threads(omp_get_num_procs());
   state.counters["t1_us"] = 1e6 * best1;
   state.counters["t2_us"] = 1e6 * best2;
   state.counters["speedup"] = best1 / best2;
+  state.counters["cpu_ratio"] = cpu2 / cpu1;
+  state.counters["speedup_bound"] = 2.0 * cpu1 / cpu2;
 }
 
 void BM_LubricationAssembly(benchmark::State& state) {
