@@ -11,7 +11,9 @@
 //    each over the iterations), so load changes hit both equally; counter speedup = t(1) / t(2). On a loaded
 //    machine the wall clock mostly measures the other processes, so the process CPU time of each batch is also
 //    given: cpu_ratio = cpu(2 threads) / cpu(1 thread) is the work the second thread adds (1 = no overhead), and
-//    speedup_bound = 2 / cpu_ratio the speedup two idle cores would give if the work is split evenly.
+//    speedup_bound = 2 / cpu_ratio the speedup two idle cores would give if the work is split evenly. As a control,
+//    control_speedup is the same 1-vs-2-thread ratio for a loop with no shared data at all (a sum of square roots):
+//    when it is near 1, the second core is taken by other processes and no loop can show a speedup.
 //  BM_LubricationAssembly/<threads>: the resistance solver's assembly, preconditioner set-up, residual check and
 //    stress for the same configuration, with a warm start that is already the solution (0 CG iterations); items/s =
 //    lubricated pairs/s.
@@ -22,6 +24,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <map>
 #include <random>
@@ -160,12 +163,24 @@ void BM_ContactForcesThreadRatio(benchmark::State& state) {
     best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / 20);
     cpu = std::min(cpu, (cpu_now() - c0) / 20);
   };
+  double control1 = 1e30, control2 = 1e30;
+  auto control = [&](int threads, double& best) {
+    omp_set_num_threads(threads);
+    const auto t0 = std::chrono::steady_clock::now();
+    double sum = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : sum)
+    for (long i = 0; i < 10'000'000; ++i) sum += std::sqrt(static_cast<double>(i));
+    benchmark::DoNotOptimize(sum);
+    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  };
   double unused_wall = 0.0, unused_cpu = 0.0;
   timed(one, 1, unused_wall, unused_cpu);
   timed(two, 2, unused_wall, unused_cpu);
   for (auto _ : state) {
     timed(one, 1, best1, cpu1);
     timed(two, 2, best2, cpu2);
+    control(1, control1);
+    control(2, control2);
   }
   omp_set_num_threads(omp_get_num_procs());
   state.counters["t1_us"] = 1e6 * best1;
@@ -173,6 +188,7 @@ void BM_ContactForcesThreadRatio(benchmark::State& state) {
   state.counters["speedup"] = best1 / best2;
   state.counters["cpu_ratio"] = cpu2 / cpu1;
   state.counters["speedup_bound"] = 2.0 * cpu1 / cpu2;
+  state.counters["control_speedup"] = control1 / control2;
 }
 
 void BM_LubricationAssembly(benchmark::State& state) {
