@@ -15,16 +15,6 @@ void Box::set_strain(double strain) { set_shear_offset(strain * length_.y()); }
 
 void Box::set_shear_offset(double offset) { offset_ = wrap_centered(offset, length_.x()); }
 
-MinimumImage Box::minimum_image(const Vec3& ri, const Vec3& rj) const {
-  Vec3 d = rj - ri;
-  const double ky = std::round(d.y() / length_.y());
-  d.y() -= ky * length_.y();
-  d.x() -= ky * offset_;
-  d.x() -= length_.x() * std::round(d.x() / length_.x());
-  d.z() -= length_.z() * std::round(d.z() / length_.z());
-  return {d, static_cast<int>(ky)};
-}
-
 int Box::wrap(Vec3& r) const {
   const double ky = std::floor(r.y() / length_.y());
   r.y() -= ky * length_.y();

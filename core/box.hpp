@@ -3,6 +3,8 @@
 // where shear_offset = strain * L_y wrapped into [-L_x/2, L_x/2). Only the wrapped offset matters for geometry,
 // so the strain may grow without bound.
 #pragma once
+#include <cmath>
+
 #include "core/vec.hpp"
 
 namespace suspend {
@@ -28,7 +30,16 @@ class Box {
   void set_shear_offset(double offset);
 
   // Minimum-image separation from r_i to r_j under Lees-Edwards (paper 000, eq. 16).
-  MinimumImage minimum_image(const Vec3& ri, const Vec3& rj) const;
+  // Inline: it is the innermost operation of the neighbour search and of every pair loop.
+  MinimumImage minimum_image(const Vec3& ri, const Vec3& rj) const {
+    Vec3 d = rj - ri;
+    const double ky = std::round(d.y() / length_.y());
+    d.y() -= ky * length_.y();
+    d.x() -= ky * offset_;
+    d.x() -= length_.x() * std::round(d.x() / length_.x());
+    d.z() -= length_.z() * std::round(d.z() / length_.z());
+    return {d, static_cast<int>(ky)};
+  }
 
   // Maps r into the primary cell [0, L)^3. Returns the number of times the y face was crossed upwards
   // (negative: downwards) so that the caller can remap the x velocity by -crossings * shear_rate * L_y (eq. 16d).

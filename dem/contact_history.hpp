@@ -1,5 +1,9 @@
 // O(N)-memory contact history (paper 000, section 2.1): per particle a bounded list of (partner, history), sorted
-// by partner index, in one flat array of N x M slots allocated once. No N^2 table, no per-step allocation.
+// by partner index. Paper 000 reserves N x M slots; here the rows are packed one after the other (compressed rows,
+// offsets per particle), so the store holds only the pairs actually in contact: 4 B per particle plus 52 B per
+// contact (partner index, tangential and rolling stretch) instead of N x M x 64 B (6 KB per particle for the
+// a_2/a_1 = 3 suspension of paper 000 Table 3, M = 98). The buffers keep their capacity: no per-step allocation
+// once the largest contact count has been seen.
 //
 // A pair (i, j) is stored once, in the row of min(i, j), with its history oriented for (min, max); lookups for
 // (max, min) return PairHistory::swapped(), so a pair listed in either order sees the same physical stretch.
@@ -13,6 +17,8 @@
 //   ... contact law on each pair, updating h[k] in place (threads over k) ...
 //   scatter(P, h)         store exactly the pairs with h[k].in_contact; everything else is released
 // Pairs that separated or left the list are released by scatter, so the store never holds stale contacts.
+// scatter rebuilds the rows in O(N + |P|); store() and release() of a single pair shift the rows behind it
+// (O(N + contacts)): they are for set-up, checkpoints and tests, not for the step loop.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -32,10 +38,11 @@ class ContactHistory {
   // Paper 000 estimate of M: ((a_max + 2 a_min)^3 - a_max^3) / a_min^3, rounded up (26 for equal spheres).
   static std::size_t capacity_for(double a_min, double a_max);
 
-  std::size_t particles() const { return count_.size(); }
+  std::size_t particles() const { return row_start_.empty() ? 0 : row_start_.size() - 1; }
   std::size_t capacity_per_particle() const { return capacity_; }
-  std::size_t size() const;  // stored pairs
-  std::size_t memory_slots() const { return slots_.size(); }
+  std::size_t size() const { return partner_.size(); }  // stored pairs
+  // Bytes held by the store's buffers (their capacity, i.e. the high-water mark of the run).
+  std::size_t memory_bytes() const;
 
   // History of (i, j) oriented for d = r_j - r_i; a fresh PairHistory when the pair is not stored.
   PairHistory lookup(std::uint32_t i, std::uint32_t j) const;
@@ -57,22 +64,26 @@ class ContactHistory {
   void scatter(std::span<const NeighbourPair> pairs, std::span<const PairHistory> in);
 
  private:
-  struct Slot {
-    std::uint32_t partner;
-    PairHistory history;
+  // The stretches of a stored pair (in_contact is implied by being stored).
+  struct Stretch {
+    Vec3 tangential, rolling;
   };
-  // First slot of the row of the lower index, the partner and whether the caller's order is swapped.
+  // The row of the lower index, the partner and whether the caller's order is swapped.
   struct Key {
     std::uint32_t row, partner;
     bool swapped;
   };
   Key key(std::uint32_t i, std::uint32_t j) const;
-  const Slot* find(const Key& k) const;
-  Slot* find(const Key& k);
+  // Position of the partner in the row, or -1.
+  std::ptrdiff_t find(const Key& k) const;
+  [[noreturn]] void overflow(std::uint32_t row) const;
 
   std::size_t capacity_ = 0;
-  std::vector<Slot> slots_;            // N x M
-  std::vector<std::uint32_t> count_;   // used slots per row
+  std::vector<std::uint32_t> row_start_;  // N + 1 offsets into partner_ / stretch_
+  std::vector<std::uint32_t> partner_;    // per stored pair, rows sorted by partner
+  std::vector<Stretch> stretch_;          // per stored pair, oriented for (row, partner)
+  std::vector<std::uint32_t> cursor_;     // scatter scratch: fill position per row
+  std::vector<std::uint32_t> source_;     // scatter scratch: input index per stored pair
 };
 
 }  // namespace suspend

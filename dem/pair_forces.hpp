@@ -51,15 +51,22 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
   const int nthreads = active.size() >= 2048 ? omp_get_max_threads() : 1;
   local.resize(nthreads);
   pair_force.resize(active.size());
+  sums.force.resize(n_particles);
+  sums.torque.resize(n_particles);
 #pragma omp parallel num_threads(nthreads)
   {
     const int t = omp_get_thread_num();
     PairSums& mine = local[t];
     mine.force.assign(n_particles, Vec3::Zero());
     mine.torque.assign(n_particles, Vec3::Zero());
-    mine.virial.clear();
-    mine.contacts = 0;
-    mine.max_overlap = 0.0;
+    Vec3* const force = mine.force.data();
+    Vec3* const torque = mine.torque.data();
+    // Scalars and the virial are summed on the thread's stack and stored once: the PairSums of neighbouring
+    // threads are adjacent in `local`, and writing them per pair would bounce cache lines between cores.
+    StressTensors virial;
+    std::size_t contacts = 0;
+    double max_overlap = 0.0;
+    std::uint32_t max_i = 0, max_j = 0;
     const std::size_t np = active.size();
     const std::size_t begin = np * t / nthreads, end = np * (t + 1) / nthreads;
     for (std::size_t k = begin; k < end; ++k) {
@@ -69,31 +76,42 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
       const PairForce f = law(pr.geometry, m, dt, history[k]);
       const Vec3 fj = f.total_on_j();
       pair_force[k] = fj;
-      mine.force[pr.j] += fj;
-      mine.force[pr.i] -= fj;
-      mine.torque[pr.i] += f.torque_i;
-      mine.torque[pr.j] += f.torque_j;
+      force[pr.j] += fj;
+      force[pr.i] -= fj;
+      torque[pr.i] += f.torque_i;
+      torque[pr.j] += f.torque_j;
       for (std::size_t c = 0; c < contribution_count; ++c)
-        if (f.on_j[c].squaredNorm() > 0.0) mine.virial.part[c] -= sym_outer(pr.geometry.d, f.on_j[c]);
+        if (f.on_j[c].squaredNorm() > 0.0) virial.part[c] -= sym_outer(pr.geometry.d, f.on_j[c]);
       const double overlap = -pr.geometry.gap();
-      if (overlap > 0.0) ++mine.contacts;
-      if (overlap > mine.max_overlap) {
-        mine.max_overlap = overlap;
-        mine.max_overlap_i = pr.i;
-        mine.max_overlap_j = pr.j;
+      if (overlap > 0.0) ++contacts;
+      if (overlap > max_overlap) {
+        max_overlap = overlap;
+        max_i = pr.i;
+        max_j = pr.j;
       }
     }
+    mine.virial = virial;
+    mine.contacts = contacts;
+    mine.max_overlap = max_overlap;
+    mine.max_overlap_i = max_i;
+    mine.max_overlap_j = max_j;
+    // Per-particle sums over the threads, in thread order (the same order for every particle split).
+#pragma omp barrier
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(n_particles); ++i) {
+      Vec3 f = Vec3::Zero(), tq = Vec3::Zero();
+      for (const PairSums& l : local) {
+        f += l.force[i];
+        tq += l.torque[i];
+      }
+      sums.force[i] = f;
+      sums.torque[i] = tq;
+    }
   }
-  sums.force.assign(n_particles, Vec3::Zero());
-  sums.torque.assign(n_particles, Vec3::Zero());
   sums.virial.clear();
   sums.max_overlap = 0.0;
   sums.contacts = 0;
   for (const PairSums& l : local) {
-    for (std::size_t i = 0; i < n_particles; ++i) {
-      sums.force[i] += l.force[i];
-      sums.torque[i] += l.torque[i];
-    }
     for (std::size_t c = 0; c < contribution_count; ++c) sums.virial.part[c] += l.virial.part[c];
     sums.contacts += l.contacts;
     if (l.max_overlap > sums.max_overlap) {

@@ -70,8 +70,8 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
     const hydro::PairLubrication& lub = law(species[pr.i], species[pr.j]);
     const double gap = pr.geometry.gap();
     const hydro::Matrix12 r = lub.resistance(pr.geometry.n, gap);
-    self_i_[l] = r.block<6, 6>(0, 0);
-    self_j_[l] = r.block<6, 6>(6, 6);
+    self_i_[l].pack(r.block<6, 6>(0, 0));
+    self_j_[l].pack(r.block<6, 6>(6, 6));
     matrix_.coupling()[l] = r.block<6, 6>(0, 6);
     strain_[l] = lub.strain_forces(pr.geometry.n, gap, flow.strain_rate(p.position[pr.i]),
                                    flow.strain_rate(p.position[pr.j]));
@@ -92,10 +92,10 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
     b << force[i] + s.translation * (a * a / 6.0) * flow.velocity_laplacian(p.position[i]), torque[i];
     for (const auto* e = matrix_.row_begin(i); e != matrix_.row_end(i); ++e) {
       if (e->transposed) {  // this particle is the link's j
-        d += self_j_[e->link];
+        self_j_[e->link].add_to(d);
         b += strain_[e->link].segment<6>(6);
       } else {
-        d += self_i_[e->link];
+        self_i_[e->link].add_to(d);
         b += strain_[e->link].segment<6>(0);
       }
     }
@@ -207,8 +207,8 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
                                          SolveResult& out) {
   const std::ptrdiff_t np = static_cast<std::ptrdiff_t>(pairs.size());
   out.lubrication_force_on_j.resize(np);
-  pair_stress_.resize(np);
   const bool dipole = params_.lubrication_stress == LubricationStress::force_dipole;
+  if (!dipole) pair_stress_.resize(np);
   const Eigen::VectorXd& x = previous_;
   // F_j^lub = -(R_ji dV_i + R_jj dV_j) + (R_FE : E)_j from the stored blocks; each pair writes its own slots.
 #pragma omp parallel for schedule(static) if (np > 256)
@@ -217,16 +217,15 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
     const std::int32_t l = pair_link_[k];
     if (l < 0) {
       out.lubrication_force_on_j[k].setZero();
-      pair_stress_[k].setZero();
+      if (!dipole) pair_stress_[k].setZero();
       continue;
     }
     const Vector6 dv_i = x.segment<6>(6 * static_cast<Eigen::Index>(pr.i));
     const Vector6 dv_j = x.segment<6>(6 * static_cast<Eigen::Index>(pr.j));
-    const Vector6 f_j = -(matrix_.coupling()[l].transpose() * dv_i + self_j_[l] * dv_j) + strain_[l].segment<6>(6);
+    const Vector6 f_j =
+        -(matrix_.coupling()[l].transpose() * dv_i + self_j_[l].unpacked() * dv_j) + strain_[l].segment<6>(6);
     out.lubrication_force_on_j[k] = f_j.head<3>();
-    if (dipole) {
-      pair_stress_[k] = -sym_outer(pr.geometry.d, out.lubrication_force_on_j[k]);
-    } else {
+    if (!dipole) {
       hydro::PairMotion m;
       m.du_i = dv_i.head<3>();
       m.dw_i = dv_i.tail<3>();
@@ -240,7 +239,13 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
   }
   out.stress.clear();
   Mat3& lub = out.stress[Contribution::lubrication];
-  for (const Mat3& s : pair_stress_) lub += s;  // in list order
+  // In list order; pairs beyond the outer cutoff add exact zeros and are skipped.
+  if (dipole) {
+    for (std::ptrdiff_t k = 0; k < np; ++k)
+      if (pair_link_[k] >= 0) lub += -sym_outer(pairs[k].geometry.d, out.lubrication_force_on_j[k]);
+  } else {
+    for (const Mat3& s : pair_stress_) lub += s;
+  }
   Mat3& hyd = out.stress[Contribution::hydrodynamic];
   for (std::size_t i = 0; i < p.size(); ++i) hyd += hydro::stokes_stresslet(p.radius[i], p.position[i], flow);
 }

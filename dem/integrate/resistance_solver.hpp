@@ -26,7 +26,10 @@
 // conjugate_gradient.hpp) warm-started from the previous solution (default), or sparse Cholesky keeping the symbolic analysis while the pair pattern is unchanged. Deterministic: the result
 // depends only on the inputs (and, for the warm start, the previous call), not on the thread count.
 // Workspaces are kept between calls: no allocation per step once the largest pair count has been seen.
+// Memory per link: the coupling block (in the matrix), the two self blocks packed as symmetric (21 values each)
+// and the strain forces; the force-dipole stress is summed from the pair forces without a per-pair tensor.
 #pragma once
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -65,6 +68,35 @@ struct SolveResult {
   int iterations = 0;                            // CG iterations (0 for Cholesky)
   double residual = 0.0;                         // relative residual |b - R dV| / |b| of the returned solution
   std::size_t lubricated_pairs = 0;              // pairs within the outer cutoff
+};
+
+// A symmetric 6x6 block stored as its upper triangle, row by row. The self blocks of R_lub are exactly symmetric
+// (hydro::PairLubrication::assemble builds them from n n^T and from transposed copies), so packing loses nothing
+// and adding the packed block gives the same bits as adding the full one.
+struct PackedSymmetric6 {
+  std::array<double, 21> upper;
+  void pack(const Matrix6& m) {
+    int k = 0;
+    for (int r = 0; r < 6; ++r)
+      for (int c = r; c < 6; ++c) upper[k++] = m(r, c);
+  }
+  Matrix6 unpacked() const {
+    Matrix6 m;
+    int k = 0;
+    for (int r = 0; r < 6; ++r)
+      for (int c = r; c < 6; ++c) m(r, c) = m(c, r) = upper[k++];
+    return m;
+  }
+  void add_to(Matrix6& d) const {
+    int k = 0;
+    for (int r = 0; r < 6; ++r) {
+      d(r, r) += upper[k++];
+      for (int c = r + 1; c < 6; ++c, ++k) {
+        d(r, c) += upper[k];
+        d(c, r) += upper[k];
+      }
+    }
+  }
 };
 
 class ResistanceSolver {
@@ -123,7 +155,7 @@ class ResistanceSolver {
   // Per link (pair with a block in the matrix): its pair index, its own diagonal contributions and strain forces.
   std::vector<BlockLink> links_;
   std::vector<std::uint32_t> link_pair_;
-  std::vector<Matrix6> self_i_, self_j_;
+  std::vector<PackedSymmetric6> self_i_, self_j_;
   std::vector<hydro::Vector12> strain_;
   std::vector<std::int32_t> pair_link_;  // per pair: its link, or -1 (beyond the outer cutoff, CG)
   std::size_t lubricated_ = 0;
@@ -133,7 +165,7 @@ class ResistanceSolver {
   std::vector<Vec3> zero_;
   PreconditionedConjugateGradient cg_;
   PatternCholesky cholesky_;
-  std::vector<Mat3> pair_stress_;
+  std::vector<Mat3> pair_stress_;  // stresslet form only
 };
 
 }  // namespace suspend

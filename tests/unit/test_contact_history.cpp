@@ -1,7 +1,7 @@
 // O(N)-memory contact history store (paper 000 section 2.1): insert/lookup/release, orientation of the stored
-// stretch, sorted bounded rows, paper 000's capacity estimate, carrying histories across a neighbour-list rebuild
-// with a different pair order, and a frictional contact that keeps its history while its particles wrap through
-// the periodic (Lees-Edwards) faces.
+// stretch, sorted bounded rows, paper 000's capacity estimate, memory proportional to the contacts, restore from
+// checkpoint entries, carrying histories across a neighbour-list rebuild with a different pair order, and a
+// frictional contact that keeps its history while its particles wrap through the periodic (Lees-Edwards) faces.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -54,7 +54,6 @@ TEST(ContactHistory, PaperCapacityEstimateAndBoundedMemory) {
   EXPECT_EQ(ContactHistory::capacity_for(1.0, 1.4), 37u);   // 3.4^3 - 1.4^3 = 36.56
   EXPECT_EQ(ContactHistory::capacity_for(1.0, 3.0), 98u);   // 5^3 - 3^3, paper 000's a_2/a_1 = 3 suspension
   ContactHistory store(5, 3);
-  EXPECT_EQ(store.memory_slots(), 15u);
   store.store(0, 4, contact(1.0));
   store.store(0, 2, contact(2.0));
   store.store(0, 3, contact(3.0));
@@ -62,7 +61,48 @@ TEST(ContactHistory, PaperCapacityEstimateAndBoundedMemory) {
   EXPECT_EQ(store.size(), 3u);
   EXPECT_EQ(store.lookup(0, 3).tangential_stretch, contact(3.0).tangential_stretch);  // sorted insert kept rows
   EXPECT_EQ(store.lookup(0, 2).tangential_stretch, contact(2.0).tangential_stretch);
-  EXPECT_EQ(store.memory_slots(), 15u);
+  // scatter enforces the same bound.
+  const std::vector<NeighbourPair> four = {{0, 1}, {0, 2}, {3, 0}, {0, 4}};
+  const std::vector<PairHistory> in(four.size(), contact(1.0));
+  EXPECT_THROW(store.scatter(four, in), NumericalError);
+}
+
+TEST(ContactHistory, MemoryGrowsWithTheContactsNotWithTheCapacity) {
+  // 20000 particles with the a_2/a_1 = 3 capacity (M = 98): N x M slots would take 20000 x 98 x 64 B = 125 MB;
+  // one contact per particle must cost a few tens of bytes per particle.
+  const std::uint32_t n = 20000;
+  ContactHistory store(n, ContactHistory::capacity_for(1.0, 3.0));
+  std::vector<NeighbourPair> pairs;
+  for (std::uint32_t i = 0; i + 1 < n; i += 2) pairs.push_back({i, i + 1});
+  const std::vector<PairHistory> in(pairs.size(), contact(1.0, 2.0));
+  store.scatter(pairs, in);
+  EXPECT_EQ(store.size(), pairs.size());
+  EXPECT_LT(store.memory_bytes(), 40u * n);
+  std::vector<PairHistory> out(pairs.size());
+  store.gather(pairs, out);
+  for (const PairHistory& h : out) {
+    EXPECT_TRUE(h.in_contact);
+    EXPECT_EQ(h.rolling_stretch, contact(1.0, 2.0).rolling_stretch);
+  }
+}
+
+TEST(ContactHistory, RestoreOfEntriesReproducesTheStore) {
+  ContactHistory a(8, 5), b(8, 5);
+  a.store(5, 2, contact(1.0, 2.0));
+  a.store(0, 7, contact(3.0));
+  a.store(2, 6, contact(4.0, -1.0));
+  b.store(1, 3, contact(9.0));  // replaced by the restore
+  b.restore(a.entries());
+  ASSERT_EQ(b.size(), 3u);
+  const auto ea = a.entries(), eb = b.entries();
+  for (std::size_t k = 0; k < ea.size(); ++k) {
+    EXPECT_EQ(ea[k].i, eb[k].i);
+    EXPECT_EQ(ea[k].j, eb[k].j);
+    EXPECT_EQ(ea[k].history.tangential_stretch, eb[k].history.tangential_stretch);
+    EXPECT_EQ(ea[k].history.rolling_stretch, eb[k].history.rolling_stretch);
+  }
+  EXPECT_EQ(b.lookup(2, 5).tangential_stretch, -contact(1.0).tangential_stretch);
+  EXPECT_FALSE(b.contains(1, 3));
 }
 
 TEST(ContactHistory, HistoriesSurviveARebuildWithADifferentPairOrder) {

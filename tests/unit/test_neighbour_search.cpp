@@ -1,6 +1,8 @@
 // Cell-list search against brute force on random polydisperse boxes, with Lees-Edwards offsets.
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <random>
 
 #include "dem/neighbour_search.hpp"
@@ -59,4 +61,38 @@ TEST(NeighbourSearch, ThreeCellsPerAxisWithShearDoesNotDoubleCount) {
     EXPECT_EQ(search.cells()[0], 3);
     EXPECT_EQ(fast, slow) << "offset fraction " << f;
   }
+}
+
+TEST(NeighbourSearch, FullStencilListsTheSamePairs) {
+  // The benchmark's full stencil (every pair met from both cells, both y faces crossed through the sheared image)
+  // against brute force.
+  const Vec3 L(23.0, 19.0, 21.0);
+  Box box(L);
+  const Config c = random_config(900, L, 1.4, 13);
+  for (double f : {0.0, 0.137, -0.4999, 0.4999}) {
+    box.set_shear_offset(f * L.x());
+    std::vector<NeighbourPair> fast, slow;
+    CellListSearch search(Stencil::full);
+    search.find_pairs(c.position, c.radius, box, 0.3, fast);
+    find_pairs_brute_force(c.position, c.radius, box, 0.3, slow);
+    EXPECT_FALSE(slow.empty());
+    EXPECT_EQ(fast, slow) << "offset fraction " << f;
+  }
+}
+
+TEST(NeighbourSearch, SameListForAnyThreadCount) {
+  // 1500 particles: binning and the final ordering both run in parallel (above 1024 particles).
+  const Vec3 L(25.0, 25.0, 25.0);
+  Box box(L);
+  box.set_shear_offset(0.21 * L.x());
+  const Config c = random_config(1500, L, 1.4, 5);
+  std::vector<NeighbourPair> one, two, slow;
+  CellListSearch search;
+  omp_set_num_threads(1);
+  search.find_pairs(c.position, c.radius, box, 0.3, one);
+  omp_set_num_threads(2);
+  search.find_pairs(c.position, c.radius, box, 0.3, two);
+  find_pairs_brute_force(c.position, c.radius, box, 0.3, slow);
+  EXPECT_EQ(one, slow);
+  EXPECT_EQ(two, slow);
 }
