@@ -20,11 +20,16 @@
 #include "core/vec.hpp"
 #include "fcm/disturbance.hpp"
 #include "fcm/fft.hpp"
+#include "fcm/rigidity_preconditioner.hpp"
 #include "fcm/sheared_grid.hpp"
 #include "fcm/spreading.hpp"
 #include "fcm/support_plan.hpp"
 
 namespace suspend::fcm {
+
+// Preconditioner of the rigidity CG: the isolated-sphere inverse (Jacobi), or the sparse Cholesky factor of the
+// isolated-sphere blocks plus the free-space pair couplings of near neighbours (rigidity_preconditioner.hpp).
+enum class RigidityPreconditioner { jacobi, near_field };
 
 struct SolverOptions {
   // Gaussians are cut off at this many monopole widths sigma_M (the dipole, narrower, at 1.24x as many of its
@@ -33,6 +38,8 @@ struct SolverOptions {
   bool rigid = true;                  // solve the stresslets (false: force- and torque-only FCM, S = 0)
   double rigidity_tolerance = 1e-6;   // relative residual of the particle rate of strain
   int max_rigidity_iterations = 200;
+  RigidityPreconditioner preconditioner = RigidityPreconditioner::near_field;
+  double near_field_cutoff = 1.5;     // near_field: pairs with |Y_m - Y_q| < cutoff (a_m + a_q)
   FftPlanning planning = FftPlanning::measure;
   void validate() const;
 };
@@ -61,6 +68,7 @@ struct MobilityResult {
 struct SolveTimings {
   double plan = 0.0, spread = 0.0, fft = 0.0, green = 0.0, interpolate = 0.0;
   int solves = 0;
+  double precondition = 0.0;  // building the near-field preconditioner (once per configuration) and applying it
 };
 
 class Solver {
@@ -94,6 +102,7 @@ class Solver {
   std::unique_ptr<VectorFft> fft_;
   std::vector<Envelope> envelopes_;
   SupportPlan plan_;  // envelope footprints of the current configuration, in spatially sorted order
+  NearFieldPreconditioner near_field_;
   std::vector<Mat3> last_stresslets_;
   SolveTimings timings_;
 };
