@@ -7,7 +7,8 @@
 // (an FFTW_MEASURE plan takes minutes under valgrind).
 // mode "mobility": rigidity CG iteration counts instead, per preconditioner, sheared at gammadot = 1: from a zero
 // stresslet guess, then `solves` time steps that displace every particle by 1e-3 a in a random direction and
-// re-solve from the previous stresslets (what a time-stepper sees).
+// re-solve from the previous stresslets (what a time-stepper sees); a 6th argument sets the near-field cutoff.
+// mode "stokes" with a 6th argument: the Stokes solves with that truncation (in monopole widths).
 #include <omp.h>
 
 #include <cstdio>
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
   }
   SolverOptions opt;
   opt.planning = FftPlanning::estimate;
+  if (argc > 5 && std::strcmp(argv[4], "stokes") == 0) opt.truncation_widths = std::atof(argv[5]);
   if (argc > 4 && std::strcmp(argv[4], "mobility") == 0) {
     if (argc > 5) opt.near_field_cutoff = std::atof(argv[5]);
     for (const auto pc : {RigidityPreconditioner::jacobi, RigidityPreconditioner::near_field}) {
