@@ -7,7 +7,10 @@
 // (an FFTW_MEASURE plan takes minutes under valgrind).
 // mode "mobility": rigidity CG iteration counts instead, per preconditioner, sheared at gammadot = 1: from a zero
 // stresslet guess, then `solves` time steps that displace every particle by 1e-3 a in a random direction and
-// re-solve from the previous stresslets (what a time-stepper sees); a 6th argument sets the near-field cutoff.
+// re-solve from the previous stresslets (what a time-stepper sees; the near-field factor is reused while the
+// particles stay within SolverOptions::near_field_reuse_displacement); a 6th argument sets the near-field cutoff,
+// a 7th the reuse displacement.
+// mode "mobility_near_field": the same for the near-field preconditioner only.
 // mode "stokes" with a 6th argument: the Stokes solves with that truncation (in monopole widths).
 #include <omp.h>
 
@@ -46,9 +49,12 @@ int main(int argc, char** argv) {
   SolverOptions opt;
   opt.planning = FftPlanning::estimate;
   if (argc > 5 && std::strcmp(argv[4], "stokes") == 0) opt.truncation_widths = std::atof(argv[5]);
-  if (argc > 4 && std::strcmp(argv[4], "mobility") == 0) {
+  const bool near_only = argc > 4 && std::strcmp(argv[4], "mobility_near_field") == 0;
+  if (argc > 4 && (std::strcmp(argv[4], "mobility") == 0 || near_only)) {
     if (argc > 5) opt.near_field_cutoff = std::atof(argv[5]);
+    if (argc > 6) opt.near_field_reuse_displacement = std::atof(argv[6]);
     for (const auto pc : {RigidityPreconditioner::jacobi, RigidityPreconditioner::near_field}) {
+      if (near_only && pc == RigidityPreconditioner::jacobi) continue;
       opt.preconditioner = pc;
       Solver solver(Vec3::Constant(l), {n, n, n}, opt);
       std::vector<Vec3> p = pos;

@@ -40,6 +40,8 @@ void SolverOptions::validate() const {
   if (!(rigidity_tolerance > 0.0 && rigidity_tolerance < 1.0))
     throw InputError("fcm.rigidity_tolerance must lie in (0, 1)");
   if (max_rigidity_iterations < 1) throw InputError("fcm.max_rigidity_iterations must be at least 1");
+  if (!(near_field_reuse_displacement >= 0.0 && near_field_reuse_displacement <= 1.0))
+    throw InputError("fcm.near_field_reuse_displacement must lie in [0, 1] (radii)");
   if (!(near_field_cutoff >= 1.0 && near_field_cutoff <= 5.0))
     throw InputError("fcm.near_field_cutoff must lie in [1, 5] (centre distance over the sum of the radii)");
 }
@@ -131,6 +133,21 @@ Disturbance Solver::apply(std::span<const Vec3> positions, std::span<const doubl
   return out;
 }
 
+bool Solver::near_field_is_current(const MobilityProblem& pb) const {
+  const std::size_t n = pb.positions.size();
+  if (near_field_positions_.size() != n || near_field_radii_ != std::vector<double>(pb.radii.begin(), pb.radii.end()))
+    return false;
+  const double reuse = options_.near_field_reuse_displacement;
+  if (!(reuse > 0.0)) return false;
+  double a_min = n > 0 ? pb.radii[0] : 1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if ((pb.positions[i] - near_field_positions_[i]).norm() > reuse * pb.radii[i]) return false;
+    a_min = std::min(a_min, pb.radii[i]);
+  }
+  // Pairs across the sheared face move with the offset (D and D + L_x are the same lattice).
+  return std::abs(wrap_centered(pb.shear_offset - near_field_offset_, grid_.length.x())) <= reuse * a_min;
+}
+
 MobilityResult Solver::solve(const MobilityProblem& pb) {
   place(pb.positions, pb.radii, pb.shear_offset);
   const std::size_t n = pb.positions.size();
@@ -169,9 +186,12 @@ MobilityResult Solver::solve(const MobilityProblem& pb) {
     // structure of spreading.hpp). Preconditioner: the isolated-sphere inverse (20/3) pi a^3 (Jacobi) or the
     // near-field factor (rigidity_preconditioner.hpp).
     const bool near_field = options_.preconditioner == RigidityPreconditioner::near_field;
-    if (near_field) {
+    if (near_field && !near_field_is_current(pb)) {
       const double t0 = omp_get_wtime();
       near_field_.build(grid_, pb.positions, pb.radii, options_.near_field_cutoff);
+      near_field_positions_.assign(pb.positions.begin(), pb.positions.end());
+      near_field_radii_.assign(pb.radii.begin(), pb.radii.end());
+      near_field_offset_ = pb.shear_offset;
       timings_.precondition += omp_get_wtime() - t0;
     }
     const auto precondition = [&](const std::vector<Mat3>& res_in, std::vector<Mat3>& out) {

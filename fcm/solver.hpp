@@ -40,6 +40,10 @@ struct SolverOptions {
   int max_rigidity_iterations = 200;
   RigidityPreconditioner preconditioner = RigidityPreconditioner::near_field;
   double near_field_cutoff = 1.5;     // near_field: pairs with |Y_m - Y_q| < cutoff (a_m + a_q)
+  // near_field: the factor is reused (not rebuilt) while no particle has moved more than this many of its radii,
+  // nor the Lees-Edwards offset by more than this many smallest radii, since it was built. Any SPD matrix is a
+  // valid preconditioner, so reuse changes the iteration count, never the solution; 0 rebuilds every solve.
+  double near_field_reuse_displacement = 0.1;
   FftPlanning planning = FftPlanning::measure;
   void validate() const;
 };
@@ -93,6 +97,8 @@ class Solver {
 
  private:
   void place(std::span<const Vec3> positions, std::span<const double> radii, double shear_offset);
+  // Whether the near-field factor was built for a configuration within near_field_reuse_displacement of pb's.
+  bool near_field_is_current(const MobilityProblem& pb) const;
   // u' from the current envelopes and the given multipoles; writes the requested moments (spans may be empty).
   void stokes_solve(std::span<const Vec3> forces, std::span<const Mat3> dipoles, std::span<Vec3> velocities,
                     std::span<Mat3> gradient_moments);
@@ -103,6 +109,9 @@ class Solver {
   std::vector<Envelope> envelopes_;
   SupportPlan plan_;  // envelope footprints of the current configuration, in spatially sorted order
   NearFieldPreconditioner near_field_;
+  std::vector<Vec3> near_field_positions_;  // configuration the near-field factor was built for
+  std::vector<double> near_field_radii_;
+  double near_field_offset_ = 0.0;
   std::vector<Mat3> last_stresslets_;
   SolveTimings timings_;
 };
