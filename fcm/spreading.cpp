@@ -69,6 +69,15 @@ constexpr int kMaxFixed = 16;
 #define SUSPEND_SIMD_CLONES
 #endif
 
+typedef double Lanes __attribute__((vector_size(32)));
+
+// (Lanes are passed by reference: by value GCC warns that the AVX calling convention differs, -Wpsabi.)
+[[gnu::always_inline]] inline void load_lanes(const double* p, Lanes& v) { std::memcpy(&v, p, sizeof v); }
+template <int N>
+[[gnu::always_inline]] inline void load_short(const double* p, Lanes& v) {  // N < 4 values, zero-filled
+  v = Lanes{p[0], N > 1 ? p[1] : 0.0, N > 2 ? p[2] : 0.0, 0.0};
+}
+
 struct RowCoefficients {
   double a[3], b[3], c[3];
 };
@@ -92,6 +101,52 @@ template <bool Monopole, int N>
       py[i] += b1 * d[i] + c1 * dd[i];
       pz[i] += b2 * d[i] + c2 * dd[i];
     }
+  }
+}
+
+// Rows of N >= 4 nodes (N = 0: any such length) in 4-lane vectors: whole vectors from the row start, then one
+// vector ending at the last node whose already-updated lanes get zero-weighted tables (so they are stored back
+// unchanged). Every load and store stays inside the row, which lies in one z plane: a thread's slab.
+template <bool Monopole, bool Masked>
+[[gnu::always_inline]] inline void spread_chunk(const double* tm, const double* td, const double* tdd,
+                                                const Lanes& keep, const Lanes (&k)[9], double* px, double* py,
+                                                double* pz) {
+  Lanes m, d, dd;
+  load_lanes(td, d);
+  load_lanes(tdd, dd);
+  if constexpr (Monopole) load_lanes(tm, m);
+  if constexpr (Masked) {
+    d *= keep;
+    dd *= keep;
+    if constexpr (Monopole) m *= keep;
+  }
+  double* p[3] = {px, py, pz};
+  for (int c = 0; c < 3; ++c) {
+    Lanes f;
+    load_lanes(p[c], f);
+    f += k[3 + c] * d + k[6 + c] * dd;
+    if constexpr (Monopole) f += k[c] * m;
+    std::memcpy(p[c], &f, sizeof f);
+  }
+}
+
+template <bool Monopole, int N>
+[[gnu::always_inline]] inline void spread_lanes(const double* m, const double* d, const double* dd,
+                                                const RowCoefficients& rc, double* px, double* py, double* pz,
+                                                int count) {
+  const int n = N > 0 ? N : count;
+  Lanes k[9];  // a, b, c of the three components, broadcast
+  for (int c = 0; c < 3; ++c) {
+    k[c] = Lanes{} + rc.a[c];
+    k[3 + c] = Lanes{} + rc.b[c];
+    k[6 + c] = Lanes{} + rc.c[c];
+  }
+  int i = 0;
+  for (; i + 4 <= n; i += 4) spread_chunk<Monopole, false>(m + i, d + i, dd + i, k[0], k, px + i, py + i, pz + i);
+  if (i < n) {
+    const int o = n - 4, old = 4 - (n - i);
+    const Lanes keep{old <= 0 ? 1.0 : 0.0, old <= 1 ? 1.0 : 0.0, old <= 2 ? 1.0 : 0.0, 1.0};
+    spread_chunk<Monopole, true>(m + o, d + o, dd + o, keep, k, px + o, py + o, pz + o);
   }
 }
 
@@ -123,7 +178,14 @@ SUSPEND_SIMD_CLONES void spread_particle(const SupportRow* rows, const SupportRo
     double* pz = fz + r->first;
     const int n = r->count;
     with_fixed_length(
-        n, [&](auto len) { spread_run<Monopole, decltype(len)::value>(m, d, dd, c, px, py, pz, n); },
+        n,
+        [&](auto len) {
+          constexpr int N = decltype(len)::value;
+          if constexpr (N > 0 && N < 4)
+            spread_run<Monopole, N>(m, d, dd, c, px, py, pz, n);
+          else
+            spread_lanes<Monopole, N>(m, d, dd, c, px, py, pz, n);
+        },
         std::make_integer_sequence<int, kMaxFixed>{});
   }
 }
@@ -135,15 +197,6 @@ SUSPEND_SIMD_CLONES void spread_particle(const SupportRow* rows, const SupportRo
 // A row of N >= 4 nodes is covered by whole vectors from its start plus one vector ending at its last node, whose
 // lanes already counted are multiplied by zero; every load stays inside the row. Rows of 1-3 nodes are loaded
 // lane by lane.
-typedef double Lanes __attribute__((vector_size(32)));
-
-// (Lanes are passed by reference: by value GCC warns that the AVX calling convention differs, -Wpsabi.)
-[[gnu::always_inline]] inline void load_lanes(const double* p, Lanes& v) { std::memcpy(&v, p, sizeof v); }
-template <int N>
-[[gnu::always_inline]] inline void load_short(const double* p, Lanes& v) {  // N < 4 values, zero-filled
-  v = Lanes{p[0], N > 1 ? p[1] : 0.0, N > 2 ? p[2] : 0.0, 0.0};
-}
-
 struct LaneSums {
   Lanes m[3], d[3], t[3];
 };
