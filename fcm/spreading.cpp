@@ -78,6 +78,8 @@ template <int N>
   v = Lanes{p[0], N > 1 ? p[1] : 0.0, N > 2 ? p[2] : 0.0, 0.0};
 }
 
+[[gnu::always_inline]] inline void broadcast(double x, Lanes& v) { v = Lanes{x, x, x, x}; }
+
 struct RowCoefficients {
   double a[3], b[3], c[3];
 };
@@ -132,15 +134,9 @@ template <bool Monopole, bool Masked>
 
 template <bool Monopole, int N>
 [[gnu::always_inline]] inline void spread_lanes(const double* m, const double* d, const double* dd,
-                                                const RowCoefficients& rc, double* px, double* py, double* pz,
+                                                const Lanes (&k)[9], double* px, double* py, double* pz,
                                                 int count) {
   const int n = N > 0 ? N : count;
-  Lanes k[9];  // a, b, c of the three components, broadcast
-  for (int c = 0; c < 3; ++c) {
-    k[c] = Lanes{} + rc.a[c];
-    k[3 + c] = Lanes{} + rc.b[c];
-    k[6 + c] = Lanes{} + rc.c[c];
-  }
   int i = 0;
   for (; i + 4 <= n; i += 4) spread_chunk<Monopole, false>(m + i, d + i, dd + i, k[0], k, px + i, py + i, pz + i);
   if (i < n) {
@@ -162,13 +158,26 @@ template <bool Monopole>
 SUSPEND_SIMD_CLONES void spread_particle(const SupportRow* rows, const SupportRow* rows_end, const double* tables,
                                          const Vec3& f, const Mat3& gs, std::uint32_t zb, std::uint32_t ze,
                                          double* fx, double* fy, double* fz) {
+  // The particle's multipoles broadcast once; a row's coefficients (a, b, c of each component, RowCoefficients)
+  // are then one vector product or multiply-add each.
+  Lanes fm[3], g0[3], g1[3], g2[3];
+  for (int i = 0; i < 3; ++i) {
+    broadcast(f[i], fm[i]);
+    broadcast(gs(i, 0), g0[i]);
+    broadcast(gs(i, 1), g1[i]);
+    broadcast(gs(i, 2), g2[i]);
+  }
   for (const SupportRow* r = rows; r != rows_end; ++r) {
     if (r->iz < zb || r->iz >= ze) continue;
-    RowCoefficients c;
+    Lanes ym, yd, wy, wz, k[9];
+    broadcast(r->yz_m, ym);
+    broadcast(r->yz_d, yd);
+    broadcast(r->ydy, wy);
+    broadcast(r->ydz, wz);
     for (int i = 0; i < 3; ++i) {
-      c.a[i] = f[i] * r->yz_m;
-      c.b[i] = gs(i, 1) * r->ydy + gs(i, 2) * r->ydz;
-      c.c[i] = gs(i, 0) * r->yz_d;
+      k[i] = Monopole ? fm[i] * ym : Lanes{};
+      k[3 + i] = g1[i] * wy + g2[i] * wz;
+      k[6 + i] = g0[i] * yd;
     }
     const double* m = tables + r->table;
     const double* d = m + r->width;
@@ -181,10 +190,17 @@ SUSPEND_SIMD_CLONES void spread_particle(const SupportRow* rows, const SupportRo
         n,
         [&](auto len) {
           constexpr int N = decltype(len)::value;
-          if constexpr (N > 0 && N < 4)
+          if constexpr (N > 0 && N < 4) {
+            RowCoefficients c{};
+            for (int i = 0; i < 3; ++i) {
+              if constexpr (Monopole) c.a[i] = k[i][0];
+              c.b[i] = k[3 + i][0];
+              c.c[i] = k[6 + i][0];
+            }
             spread_run<Monopole, N>(m, d, dd, c, px, py, pz, n);
-          else
-            spread_lanes<Monopole, N>(m, d, dd, c, px, py, pz, n);
+          } else {
+            spread_lanes<Monopole, N>(m, d, dd, k, px, py, pz, n);
+          }
         },
         std::make_integer_sequence<int, kMaxFixed>{});
   }
@@ -277,7 +293,11 @@ SUSPEND_SIMD_CLONES void interpolate_particle(const SupportRow* rows, const Supp
         n, [&](auto len) { interpolate_row<decltype(len)::value>(m, d, dd, ux + o, uy + o, uz + o, n, t); },
         std::make_integer_sequence<int, kMaxFixed>{});
     // dy and dz are constant along the row: sum u d_y w_D = ydy sum u d (support_plan.hpp).
-    const Lanes wm = Lanes{} + r->yz_m, wd = Lanes{} + r->yz_d, wy = Lanes{} + r->ydy, wz = Lanes{} + r->ydz;
+    Lanes wm, wd, wy, wz;
+    broadcast(r->yz_m, wm);
+    broadcast(r->yz_d, wd);
+    broadcast(r->ydy, wy);
+    broadcast(r->ydz, wz);
     for (int c = 0; c < 3; ++c) {
       p.u[c] += wm * t.m[c];
       p.s0[c] += wd * t.t[c];
