@@ -3,12 +3,20 @@
 //   OMP_NUM_THREADS=1 valgrind --tool=callgrind --collect-atstart=no
 //     --toggle-collect='suspend::fcm::Solver::apply*' build/bin/fcm_solve_once   (one command line)
 //   callgrind_annotate --inclusive=yes callgrind.out.<pid> | grep -E 'spread|interpolate|fftw_execute|green'
-// Args: [grid nodes per direction = 64] [volume fraction = 0.4] [solves = 1]. FFTW plans with FFTW_ESTIMATE (an
-// FFTW_MEASURE plan takes minutes under valgrind).
+// Args: [grid nodes per direction = 64] [volume fraction = 0.4] [solves = 1] [mode]. FFTW plans with FFTW_ESTIMATE
+// (an FFTW_MEASURE plan takes minutes under valgrind).
+// mode "mobility": rigidity CG iteration counts instead, per preconditioner, sheared at gammadot = 1: from a zero
+// stresslet guess, then `solves` time steps that displace every particle by 1e-3 a in a random direction and
+// re-solve from the previous stresslets (what a time-stepper sees; the near-field factor is reused while the
+// particles stay within SolverOptions::near_field_reuse_displacement); a 6th argument sets the near-field cutoff,
+// a 7th the reuse displacement.
+// mode "mobility_near_field": the same for the near-field preconditioner only.
+// mode "stokes" with a 6th argument: the Stokes solves with that truncation (in monopole widths).
 #include <omp.h>
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -40,6 +48,46 @@ int main(int argc, char** argv) {
   }
   SolverOptions opt;
   opt.planning = FftPlanning::estimate;
+  if (argc > 5 && std::strcmp(argv[4], "stokes") == 0) opt.truncation_widths = std::atof(argv[5]);
+  const bool near_only = argc > 4 && std::strcmp(argv[4], "mobility_near_field") == 0;
+  if (argc > 4 && (std::strcmp(argv[4], "mobility") == 0 || near_only)) {
+    if (argc > 5) opt.near_field_cutoff = std::atof(argv[5]);
+    if (argc > 6) opt.near_field_reuse_displacement = std::atof(argv[6]);
+    for (const auto pc : {RigidityPreconditioner::jacobi, RigidityPreconditioner::near_field}) {
+      if (near_only && pc == RigidityPreconditioner::jacobi) continue;
+      opt.preconditioner = pc;
+      Solver solver(Vec3::Constant(l), {n, n, n}, opt);
+      std::vector<Vec3> p = pos;
+      const std::vector<Mat3> zero(p.size(), Mat3::Zero());
+      std::mt19937_64 step_rng(11);
+      std::normal_distribution<double> normal;
+      MobilityProblem pb{p, rad, force, torque, 1.0, 1.3, zero};
+      const double t0 = omp_get_wtime();
+      MobilityResult r = solver.solve(pb);
+      const double t1 = omp_get_wtime();
+      std::printf("%s: zero guess %d iterations, %.3f s (preconditioner %.3f s)\n",
+                  pc == RigidityPreconditioner::jacobi ? "jacobi" : "near_field", r.iterations, t1 - t0,
+                  solver.timings().precondition);
+      pb.stresslet_guess = {};  // warm start from the previous solution
+      int total = 0;
+      solver.reset_timings();
+      const double t2 = omp_get_wtime();
+      for (int step = 0; step < solves; ++step) {
+        for (Vec3& x : p) {
+          const Vec3 dir(normal(step_rng), normal(step_rng), normal(step_rng));
+          x += 1e-3 * dir.normalized();
+        }
+        r = solver.solve(pb);
+        total += r.iterations;
+        std::printf("  warm step %d: %d iterations\n", step + 1, r.iterations);
+      }
+      if (solves > 0)
+        std::printf("  warm start mean %.2f iterations, %.3f s per solve (preconditioner %.3f s)\n",
+                    static_cast<double>(total) / solves, (omp_get_wtime() - t2) / solves,
+                    solver.timings().precondition / solves);
+    }
+    return 0;
+  }
   Solver solver(Vec3::Constant(l), {n, n, n}, opt);
   double check = 0.0;
   for (int s = 0; s < solves; ++s) {

@@ -31,28 +31,38 @@ VectorFft::VectorFft(std::array<int, 3> n, int threads, FftPlanning planning) : 
   real_ = fftw_alloc_real(3 * real_size_);
   spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(3 * complex_size_));
   if (real_ == nullptr || spectrum_ == nullptr) throw NumericalError("fcm: cannot allocate the FFT grid");
-  fftw_plan_with_nthreads(threads > 0 ? threads : omp_get_max_threads());
+  const int nthreads = threads > 0 ? threads : omp_get_max_threads();
+  fftw_plan_with_nthreads(nthreads);
   const int dims[3] = {n[2], n[1], n[0]};  // row-major, x fastest
   const unsigned flags = planning == FftPlanning::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
   auto* c = reinterpret_cast<fftw_complex*>(spectrum_);
   const int rdist = static_cast<int>(real_size_), cdist = static_cast<int>(complex_size_);
-  forward_plan_ = fftw_plan_many_dft_r2c(3, dims, 3, real_, nullptr, 1, rdist, c, nullptr, 1, cdist, flags);
-  inverse_plan_ = fftw_plan_many_dft_c2r(3, dims, 3, c, nullptr, 1, cdist, real_, nullptr, 1, rdist, flags);
-  if (forward_plan_ == nullptr || inverse_plan_ == nullptr) throw NumericalError("fcm: FFTW planning failed");
+  const int batch = nthreads > 1 ? 1 : 3;
+  for (int k = 0; k < 3 / batch; ++k) {
+    double* r = real_ + k * real_size_;
+    fftw_complex* s = c + k * complex_size_;
+    forward_plans_[k] = fftw_plan_many_dft_r2c(3, dims, batch, r, nullptr, 1, rdist, s, nullptr, 1, cdist, flags);
+    inverse_plans_[k] = fftw_plan_many_dft_c2r(3, dims, batch, s, nullptr, 1, cdist, r, nullptr, 1, rdist, flags);
+    if (forward_plans_[k] == nullptr || inverse_plans_[k] == nullptr)
+      throw NumericalError("fcm: FFTW planning failed");
+  }
   // Planning with FFTW_MEASURE overwrites the arrays.
   std::fill(real_, real_ + 3 * real_size_, 0.0);
 }
 
 VectorFft::~VectorFft() {
   std::lock_guard<std::mutex> lock(planner_mutex());
-  if (forward_plan_ != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(forward_plan_));
-  if (inverse_plan_ != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(inverse_plan_));
+  for (void* p : forward_plans_)
+    if (p != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(p));
+  for (void* p : inverse_plans_)
+    if (p != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(p));
   fftw_free(real_);
   fftw_free(spectrum_);
 }
 
 void VectorFft::forward(FftScaling scaling) {
-  fftw_execute(static_cast<fftw_plan>(forward_plan_));
+  for (void* p : forward_plans_)
+    if (p != nullptr) fftw_execute(static_cast<fftw_plan>(p));
   if (scaling == FftScaling::inverse_size) {
     const double s = 1.0 / static_cast<double>(real_size_);
     const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(3 * complex_size_);
@@ -62,7 +72,8 @@ void VectorFft::forward(FftScaling scaling) {
 }
 
 void VectorFft::inverse(FftScaling scaling) {
-  fftw_execute(static_cast<fftw_plan>(inverse_plan_));
+  for (void* p : inverse_plans_)
+    if (p != nullptr) fftw_execute(static_cast<fftw_plan>(p));
   if (scaling == FftScaling::inverse_size) {
     const double s = 1.0 / static_cast<double>(real_size_);
     const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(3 * real_size_);

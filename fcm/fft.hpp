@@ -42,8 +42,11 @@ class VectorFft {
   std::size_t complex_size_;
   double* real_ = nullptr;
   std::complex<double>* spectrum_ = nullptr;
-  void* forward_plan_ = nullptr;
-  void* inverse_plan_ = nullptr;
+  // One batched plan for all three components with one thread; with more, one plan per component run in turn:
+  // FFTW splits a batch of three between two threads 2 : 1 (measured with callgrind, docs/fcm.md), while a single
+  // transform is split evenly over its planes.
+  std::array<void*, 3> forward_plans_{};
+  std::array<void*, 3> inverse_plans_{};
 };
 
 }  // namespace suspend::fcm

@@ -40,6 +40,10 @@ void SolverOptions::validate() const {
   if (!(rigidity_tolerance > 0.0 && rigidity_tolerance < 1.0))
     throw InputError("fcm.rigidity_tolerance must lie in (0, 1)");
   if (max_rigidity_iterations < 1) throw InputError("fcm.max_rigidity_iterations must be at least 1");
+  if (!(near_field_reuse_displacement >= 0.0 && near_field_reuse_displacement <= 1.0))
+    throw InputError("fcm.near_field_reuse_displacement must lie in [0, 1] (radii)");
+  if (!(near_field_cutoff >= 1.0 && near_field_cutoff <= 5.0))
+    throw InputError("fcm.near_field_cutoff must lie in [1, 5] (centre distance over the sum of the radii)");
 }
 
 Solver::Solver(const Vec3& box_length, std::array<int, 3> grid, SolverOptions options) : options_(options) {
@@ -129,6 +133,21 @@ Disturbance Solver::apply(std::span<const Vec3> positions, std::span<const doubl
   return out;
 }
 
+bool Solver::near_field_is_current(const MobilityProblem& pb) const {
+  const std::size_t n = pb.positions.size();
+  if (near_field_positions_.size() != n || near_field_radii_ != std::vector<double>(pb.radii.begin(), pb.radii.end()))
+    return false;
+  const double reuse = options_.near_field_reuse_displacement;
+  if (!(reuse > 0.0)) return false;
+  double a_min = n > 0 ? pb.radii[0] : 1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if ((pb.positions[i] - near_field_positions_[i]).norm() > reuse * pb.radii[i]) return false;
+    a_min = std::min(a_min, pb.radii[i]);
+  }
+  // Pairs across the sheared face move with the offset (D and D + L_x are the same lattice).
+  return std::abs(wrap_centered(pb.shear_offset - near_field_offset_, grid_.length.x())) <= reuse * a_min;
+}
+
 MobilityResult Solver::solve(const MobilityProblem& pb) {
   place(pb.positions, pb.radii, pb.shear_offset);
   const std::size_t n = pb.positions.size();
@@ -164,16 +183,33 @@ MobilityResult Solver::solve(const MobilityProblem& pb) {
 
   if (options_.rigid && n > 0) {
     // Preconditioned CG on K S = E_inf + e'(F, T, 0), K S = -e'(0, 0, S): symmetric positive (the adjoint
-    // structure of spreading.hpp). Jacobi preconditioner: the isolated-sphere inverse, (20/3) pi a^3.
-    std::vector<double> precond(n);
+    // structure of spreading.hpp). Preconditioner: the isolated-sphere inverse (20/3) pi a^3 (Jacobi) or the
+    // near-field factor (rigidity_preconditioner.hpp).
+    const bool near_field = options_.preconditioner == RigidityPreconditioner::near_field;
+    if (near_field && !near_field_is_current(pb)) {
+      const double t0 = omp_get_wtime();
+      near_field_.build(grid_, pb.positions, pb.radii, options_.near_field_cutoff);
+      near_field_positions_.assign(pb.positions.begin(), pb.positions.end());
+      near_field_radii_.assign(pb.radii.begin(), pb.radii.end());
+      near_field_offset_ = pb.shear_offset;
+      timings_.precondition += omp_get_wtime() - t0;
+    }
+    const auto precondition = [&](const std::vector<Mat3>& res_in, std::vector<Mat3>& out) {
+      if (!near_field) {
+        for (std::size_t i = 0; i < n; ++i) out[i] = res_in[i] / stresslet_self_mobility(pb.radii[i]);
+        return;
+      }
+      const double t0 = omp_get_wtime();
+      near_field_.apply(res_in, out);
+      timings_.precondition += omp_get_wtime() - t0;
+    };
     // The residual is measured against a rate-of-strain scale that stays meaningful when the warm start is
     // already converged or the right-hand side vanishes by symmetry: |r0|^2 plus, per particle, |E_inf|^2, the
     // strain the guess induces on an isolated sphere and the rates F/(6 pi a^2), T/(8 pi a^3).
     double scale2 = dot(r, r);
     for (std::size_t i = 0; i < n; ++i) {
       const double ai = pb.radii[i];
-      precond[i] = 1.0 / stresslet_self_mobility(ai);
-      const Mat3 self = res.stresslets[i] / precond[i];
+      const Mat3 self = res.stresslets[i] * stresslet_self_mobility(ai);
       scale2 += (self.array() * self.array()).sum() + e_inf.squaredNorm();
       if (!pb.forces.empty()) scale2 += (pb.forces[i] * translational_self_mobility(ai) / ai).squaredNorm();
       if (!pb.torques.empty()) scale2 += (pb.torques[i] * rotational_self_mobility(ai)).squaredNorm();
@@ -181,7 +217,8 @@ MobilityResult Solver::solve(const MobilityProblem& pb) {
     const double scale = std::sqrt(scale2);
     std::vector<Mat3> z(n), p(n), q(n);
     std::vector<Vec3> up(n);
-    for (std::size_t i = 0; i < n; ++i) p[i] = z[i] = precond[i] * r[i];
+    precondition(r, z);
+    p = z;
     double rz = dot(r, z);
     res.residual = scale > 0.0 ? std::sqrt(dot(r, r)) / scale : 0.0;
     while (res.residual > options_.rigidity_tolerance && res.iterations < options_.max_rigidity_iterations) {
@@ -198,7 +235,7 @@ MobilityResult Solver::solve(const MobilityProblem& pb) {
       }
       ++res.iterations;
       res.residual = std::sqrt(dot(r, r)) / scale;
-      for (std::size_t i = 0; i < n; ++i) z[i] = precond[i] * r[i];
+      precondition(r, z);
       const double rz_new = dot(r, z);
       const double beta = rz_new / rz;
       rz = rz_new;

@@ -20,11 +20,16 @@
 #include "core/vec.hpp"
 #include "fcm/disturbance.hpp"
 #include "fcm/fft.hpp"
+#include "fcm/rigidity_preconditioner.hpp"
 #include "fcm/sheared_grid.hpp"
 #include "fcm/spreading.hpp"
 #include "fcm/support_plan.hpp"
 
 namespace suspend::fcm {
+
+// Preconditioner of the rigidity CG: the isolated-sphere inverse (Jacobi), or the sparse Cholesky factor of the
+// isolated-sphere blocks plus the free-space pair couplings of near neighbours (rigidity_preconditioner.hpp).
+enum class RigidityPreconditioner { jacobi, near_field };
 
 struct SolverOptions {
   // Gaussians are cut off at this many monopole widths sigma_M (the dipole, narrower, at 1.24x as many of its
@@ -33,6 +38,12 @@ struct SolverOptions {
   bool rigid = true;                  // solve the stresslets (false: force- and torque-only FCM, S = 0)
   double rigidity_tolerance = 1e-6;   // relative residual of the particle rate of strain
   int max_rigidity_iterations = 200;
+  RigidityPreconditioner preconditioner = RigidityPreconditioner::near_field;
+  double near_field_cutoff = 1.5;     // near_field: pairs with |Y_m - Y_q| < cutoff (a_m + a_q)
+  // near_field: the factor is reused (not rebuilt) while no particle has moved more than this many of its radii,
+  // nor the Lees-Edwards offset by more than this many smallest radii, since it was built. Any SPD matrix is a
+  // valid preconditioner, so reuse changes the iteration count, never the solution; 0 rebuilds every solve.
+  double near_field_reuse_displacement = 0.1;
   FftPlanning planning = FftPlanning::measure;
   void validate() const;
 };
@@ -61,6 +72,7 @@ struct MobilityResult {
 struct SolveTimings {
   double plan = 0.0, spread = 0.0, fft = 0.0, green = 0.0, interpolate = 0.0;
   int solves = 0;
+  double precondition = 0.0;  // building the near-field preconditioner (once per configuration) and applying it
 };
 
 class Solver {
@@ -85,6 +97,8 @@ class Solver {
 
  private:
   void place(std::span<const Vec3> positions, std::span<const double> radii, double shear_offset);
+  // Whether the near-field factor was built for a configuration within near_field_reuse_displacement of pb's.
+  bool near_field_is_current(const MobilityProblem& pb) const;
   // u' from the current envelopes and the given multipoles; writes the requested moments (spans may be empty).
   void stokes_solve(std::span<const Vec3> forces, std::span<const Mat3> dipoles, std::span<Vec3> velocities,
                     std::span<Mat3> gradient_moments);
@@ -94,6 +108,10 @@ class Solver {
   std::unique_ptr<VectorFft> fft_;
   std::vector<Envelope> envelopes_;
   SupportPlan plan_;  // envelope footprints of the current configuration, in spatially sorted order
+  NearFieldPreconditioner near_field_;
+  std::vector<Vec3> near_field_positions_;  // configuration the near-field factor was built for
+  std::vector<double> near_field_radii_;
+  double near_field_offset_ = 0.0;
   std::vector<Mat3> last_stresslets_;
   SolveTimings timings_;
 };

@@ -18,23 +18,25 @@ void apply_stokes_green(const ShearedGrid& grid, VectorFft& fft, double scale) {
   for (int iz = 0; iz < nz; ++iz) {
     const int m3 = iz <= nz / 2 ? iz : iz - nz;
     const bool nyq3 = nz % 2 == 0 && iz == nz / 2;
+    const double k3 = c3 * m3;
     for (int iy = 0; iy < ny; ++iy) {
       const int m2 = iy <= ny / 2 ? iy : iy - ny;
       const bool nyq2 = ny % 2 == 0 && iy == ny / 2;
       const std::size_t row = (static_cast<std::size_t>(iz) * ny + iy) * hx;
-      for (int m1 = 0; m1 < hx; ++m1) {
+      // Zeroed: Nyquist planes, the Nyquist x mode and k = 0; the loop below sees only k^2 > 0.
+      const int m_end = nx % 2 == 0 ? nx / 2 : hx;
+      const int m_begin = nyq2 || nyq3 ? m_end : (m2 == 0 && m3 == 0 ? 1 : 0);
+      for (int m1 = 0; m1 < m_begin; ++m1) f1[row + m1] = f2[row + m1] = f3[row + m1] = 0.0;
+      for (int m1 = m_end; m1 < hx; ++m1) f1[row + m1] = f2[row + m1] = f3[row + m1] = 0.0;
+      const double k2 = c2 * m2;
+      for (int m1 = m_begin; m1 < m_end; ++m1) {
         const std::size_t i = row + m1;
-        const bool nyq1 = nx % 2 == 0 && m1 == nx / 2;
-        if ((m1 == 0 && m2 == 0 && m3 == 0) || nyq1 || nyq2 || nyq3) {
-          f1[i] = f2[i] = f3[i] = 0.0;
-          continue;
-        }
-        const double k1 = c1 * m1, k2 = c2 * m2 - gt * c1 * m1, k3 = c3 * m3;
-        const double k2sum = k1 * k1 + k2 * k2 + k3 * k3;
-        const std::complex<double> kf = (k1 * f1[i] + k2 * f2[i] + k3 * f3[i]) / k2sum;
-        const double g = scale / k2sum;
+        const double k1 = c1 * m1, k2s = k2 - gt * k1;
+        const double inv = 1.0 / (k1 * k1 + k2s * k2s + k3 * k3);
+        const std::complex<double> kf = (k1 * f1[i] + k2s * f2[i] + k3 * f3[i]) * inv;
+        const double g = scale * inv;
         f1[i] = g * (f1[i] - k1 * kf);
-        f2[i] = g * (f2[i] - k2 * kf);
+        f2[i] = g * (f2[i] - k2s * kf);
         f3[i] = g * (f3[i] - k3 * kf);
       }
     }
