@@ -5,6 +5,7 @@
 // Cholesky), the FCM Stokes solves and the rest; every time is reported as a ratio to one bare FFT Stokes solve
 // (3 forward + 3 inverse r2c transforms of the same grid, FFTW measure plans), measured in the same run.
 // Usage: bench_coupling [steps=10] [warmup=5] [cache_dir=coupling_cache] [krylov_tolerance=1e-4]
+//                       [near_field=cg|cholesky] [preconditioner_cutoff=2.2]
 #include <omp.h>
 
 #include <cstdio>
@@ -37,8 +38,15 @@ int main(int argc, char** argv) {
   FcmParams fcm;
   fcm.cache_dir = cache;
   fcm.krylov_tolerance = tolerance;
+  const bool cholesky = argc > 5 && std::string(argv[5]) == "cholesky";
+  if (argc > 6) fcm.preconditioner_cutoff = std::atof(argv[6]);
   double t0 = omp_get_wtime();
   FcmSimulation sim(state, box, params, fcm);
+  if (cholesky) {
+    coupling::KrylovParams k = sim.mobility().params();
+    k.near_field = coupling::KrylovParams::NearField::cholesky;
+    sim.mobility().set_params(k);
+  }
   std::printf("setup (pair table from cache or computed): %.2f s; phi = %.4f, N = %zu, threads = %d\n",
               omp_get_wtime() - t0, packing.report.phi, radius.size(), omp_get_max_threads());
   for (int s = 0; s < warmup; ++s) {
@@ -81,6 +89,9 @@ int main(int argc, char** argv) {
               sim.state().strain);
   std::printf("  GMRES iterations %.1f, Stokes solves %.1f, corrected pairs %.0f, contacts %.1f\n",
               double(iterations) / steps, double(solves) / steps, double(pairs) / steps, double(contacts) / steps);
+  std::printf("  near field: %s, inner CG iterations %ld in total, Cholesky analyses %d, failures %d\n",
+              cholesky ? "cholesky" : "block-SGS CG", sim.mobility().inner_iterations(),
+              sim.mobility().preconditioner_analyses(), sim.mobility().preconditioner_failures());
   std::printf("  bare FFT Stokes solve (32^3): %.3f ms\n", 1e3 * bare);
   std::printf("  %-28s %9s %9s\n", "stage", "ms", "/ bare FFT");
   auto row = [&](const char* name, double t) { std::printf("  %-28s %9.2f %9.1f\n", name, 1e3 * t, t / bare); };

@@ -38,12 +38,30 @@ const std::array<Mat3, 5>& traceless_basis() {
 void KrylovParams::validate() const {
   if (!(tolerance > 0.0 && tolerance < 1.0)) throw InputError("fcm.krylov_tolerance must lie in (0, 1)");
   if (max_iterations < 1) throw InputError("fcm.krylov_max_iterations must be at least 1");
+  if (!(preconditioner_cutoff >= 2.0)) throw InputError("fcm.preconditioner_cutoff must be >= 2");
+  if (!(inner_tolerance > 0.0 && inner_tolerance < 1.0)) throw InputError("fcm.inner_tolerance must lie in (0, 1)");
+  if (inner_max_iterations < 1) throw InputError("fcm.inner_max_iterations must be at least 1");
 }
 
 CoupledMobility::CoupledMobility(const Vec3& box_length, std::array<int, 3> grid, const fcm::SolverOptions& fcm,
                                  const KrylovParams& krylov)
     : solver_(box_length, grid, fcm), params_(krylov) {
   params_.validate();
+}
+
+std::vector<double> CoupledMobility::warm_start_state() const {
+  std::vector<double> s(x_.data(), x_.data() + x_.size());
+  if (x_older_.size() == x_.size()) s.insert(s.end(), x_older_.data(), x_older_.data() + x_older_.size());
+  return s;
+}
+
+void CoupledMobility::set_warm_start_state(const std::vector<double>& state) {
+  forget_warm_start();
+  if (state.size() % 11 != 0) throw InputError("coupling: warm start must hold 11 or 22 values per particle");
+  const bool both = state.size() % 22 == 0 && !state.empty();
+  const Eigen::Index half = static_cast<Eigen::Index>(both ? state.size() / 2 : state.size());
+  x_ = Eigen::Map<const Eigen::VectorXd>(state.data(), half);
+  if (both) x_older_ = Eigen::Map<const Eigen::VectorXd>(state.data() + half, half);
 }
 
 void CoupledMobility::stokes(const CoupledProblem& pb, const Eigen::VectorXd& f, const Eigen::VectorXd& s,
@@ -74,7 +92,7 @@ void CoupledMobility::stokes(const CoupledProblem& pb, const Eigen::VectorXd& f,
   }
 }
 
-void CoupledMobility::solve(const CoupledProblem& pb, const SubgridLubrication* subgrid, CoupledResult& out) {
+void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgrid, CoupledResult& out) {
   const std::size_t n = pb.positions.size();
   if (pb.radii.size() != n || (!pb.forces.empty() && pb.forces.size() != n) ||
       (!pb.torques.empty() && pb.torques.size() != n))
@@ -96,7 +114,12 @@ void CoupledMobility::solve(const CoupledProblem& pb, const SubgridLubrication* 
   if (subgrid) subgrid->add_strain_forces(pb.shear_rate, f0);
   timings_.subgrid += omp_get_wtime() - t0;
 
-  if (!params_.warm_start || x_.size() != nv + ns) x_ = Eigen::VectorXd::Zero(nv + ns);
+  if (!params_.warm_start || x_.size() != nv + ns) {
+    x_ = Eigen::VectorXd::Zero(nv + ns);
+    x_older_.resize(0);
+  }
+  const Eigen::VectorXd last = x_;
+  if (params_.extrapolate && x_older_.size() == x_.size()) x_ = 2.0 * x_ - x_older_;
   // Preconditioner: (R_Stokes + sum Delta_R)^-1 R_Stokes on the velocities, the isolated stresslet on the strains.
   std::vector<double> radius(pb.radii.begin(), pb.radii.end());
   Eigen::VectorXd r_stokes(nv), s_scale(ns);
@@ -109,9 +132,12 @@ void CoupledMobility::solve(const CoupledProblem& pb, const SubgridLubrication* 
   bool near_ok = false;
   t0 = omp_get_wtime();
   if (subgrid && subgrid->corrected_pairs() > 0) {
-    subgrid->resistance_matrix(radius, near_);
+    subgrid->resistance_matrix(radius, params_.preconditioner_cutoff, near_);
     try {
-      cholesky_.factorize(near_);
+      if (params_.near_field == KrylovParams::NearField::cholesky)
+        cholesky_.factorize(near_);
+      else
+        inner_.prepare(near_);
       near_ok = true;
     } catch (const NumericalError&) {
       ++preconditioner_failures_;
@@ -157,7 +183,15 @@ void CoupledMobility::solve(const CoupledProblem& pb, const SubgridLubrication* 
     if (near_ok) {
       const double tp = omp_get_wtime();
       rhs = r_stokes.cwiseProduct(v.head(nv));
-      cholesky_.solve(rhs, sol);
+      if (params_.near_field == KrylovParams::NearField::cholesky) {
+        cholesky_.solve(rhs, sol);
+      } else {
+        sol = v.head(nv);  // the isolated-sphere answer as the inner start
+        const ConjugateGradientReport cg = inner_.solve(near_, rhs, sol, params_.inner_tolerance,
+                                                        params_.inner_max_iterations,
+                                                        Preconditioner::symmetric_gauss_seidel);
+        inner_iterations_ += cg.iterations;
+      }
       result.head(nv) = sol;
       timings_.preconditioner += omp_get_wtime() - tp;
     } else {
@@ -170,15 +204,19 @@ void CoupledMobility::solve(const CoupledProblem& pb, const SubgridLubrication* 
   out.iterations = rep.iterations;
   out.stokes_solves = rep.iterations + 1;
   out.residual = scale > 0.0 ? rep.residual / scale : 0.0;
-  if (!(out.residual <= params_.tolerance))
+  if (!(out.residual <= params_.tolerance)) {
+    x_ = last;
     throw NumericalError("coupled FCM solve did not converge in " + std::to_string(rep.iterations) +
                          " GMRES iterations (relative residual " + std::to_string(out.residual) + ")");
+  }
   x_ += dx;
   if (!x_.allFinite()) {
     x_.resize(0);
+    x_older_.resize(0);
     throw NumericalError("coupled FCM solve: non-finite solution");
   }
 
+  x_older_ = last;
   out.velocities.resize(n);
   out.angular_velocities.resize(n);
   out.stresslets.resize(n);

@@ -13,12 +13,16 @@
 //    and the operator A x = (dV - U'(-Delta_R dV, S), -B : E'(-Delta_R dV, S)) one more per GMRES iteration.
 //    The problem is linear in (gammadot, F_ext): x = gammadot x_shear + x_force (solve_parts).
 //  * Preconditioner (right): the isolated-sphere FCM response plus the exact pair correction,
-//        P^-1 (r_v, r_s) = ((R_Stokes + sum Delta_R)^-1 R_Stokes r_v, (20/3) pi a^3 r_s),
-//    the first block by sparse Cholesky (dem/integrate/sparse_cholesky.hpp; falls back to identity if not
-//    positive definite, counted in preconditioner_failures()).
+//        P^-1 (r_v, r_s) = ((R_Stokes + sum' Delta_R)^-1 R_Stokes r_v, (20/3) pi a^3 r_s),
+//    sum' over the pairs with s' < preconditioner_cutoff (the stiff lubrication pairs; all pairs would make the
+//    Cholesky factor dense: 2.2 s per step at phi = 0.45 with the 3.5 cutoff), the first block by block-SGS
+//    conjugate gradients to a loose tolerance (default; gmres.hpp is flexible: it keeps the preconditioned vectors)
+//    or by sparse Cholesky (dem/integrate/; either falls back to identity if the near-field matrix is not positive
+//    definite, counted in preconditioner_failures()).
 //  * Stopping: |r| <= tolerance * scale, scale^2 = |r0|^2 + sum_i [ |E_inf|^2 + (|F_i| / 6 pi a_i)^2 / a_i^2 +
 //    (|T_i| / 8 pi a_i^3)^2 ] (strain-rate units, like the FCM rigidity solve).
-//  * Warm start: the previous solution if the particle count matches (set_warm_start for restarts).
+//  * Warm start: the previous solution if the particle count matches (set_warm_start for restarts), or, with
+//    `extrapolate` and two previous solutions, 2 x_n - x_{n-1} (the particles move smoothly; steps of similar size).
 // Units: eta = 1, lengths in a_1.
 #pragma once
 #include <array>
@@ -27,6 +31,7 @@
 #include <vector>
 
 #include "coupling/subgrid_lubrication.hpp"
+#include "dem/integrate/conjugate_gradient.hpp"
 #include "dem/integrate/sparse_cholesky.hpp"
 #include "fcm/solver.hpp"
 
@@ -36,6 +41,14 @@ struct KrylovParams {
   double tolerance = 1e-4;   // relative residual (contract above)
   int max_iterations = 200;  // GMRES iterations (one Stokes solve each) before NumericalError
   bool warm_start = true;
+  bool extrapolate = true;   // warm start from the linear extrapolation of the last two solutions
+  double preconditioner_cutoff = 2.2;  // s' below which a pair's correction enters the near-field preconditioner
+  // Near-field block of the preconditioner: sparse Cholesky (exact) or a few block-SGS conjugate-gradient
+  // iterations to inner_tolerance (inexact and varying, which the flexible GMRES of gmres.hpp allows).
+  enum class NearField { cholesky, conjugate_gradient };
+  NearField near_field = NearField::conjugate_gradient;
+  double inner_tolerance = 1e-2;
+  int inner_max_iterations = 50;
   void validate() const;     // throws InputError naming the key (fcm.krylov_*)
 };
 
@@ -64,14 +77,26 @@ class CoupledMobility {
 
   // subgrid: assembled for this configuration (nullptr: FCM alone). Throws NumericalError if GMRES does not
   // converge or the solution is not finite.
-  void solve(const CoupledProblem& problem, const SubgridLubrication* subgrid, CoupledResult& out);
+  void solve(const CoupledProblem& problem, SubgridLubrication* subgrid, CoupledResult& out);
 
   const Eigen::VectorXd& warm_start() const { return x_; }
-  void set_warm_start(const Eigen::VectorXd& x) { x_ = x; }
-  void forget_warm_start() { x_.resize(0); }
+  // Everything the next warm start depends on (the last solution, and the one before it when extrapolating), for
+  // checkpoints: a restarted run then repeats the uninterrupted one bit for bit.
+  std::vector<double> warm_start_state() const;
+  void set_warm_start_state(const std::vector<double>& state);
+  void forget_warm_start() {
+    x_.resize(0);
+    x_older_.resize(0);
+  }
   fcm::Solver& solver() { return solver_; }
   const KrylovParams& params() const { return params_; }
+  void set_params(const KrylovParams& p) {
+    p.validate();
+    params_ = p;
+  }
   int preconditioner_failures() const { return preconditioner_failures_; }
+  int preconditioner_analyses() const { return cholesky_.analyses(); }
+  long inner_iterations() const { return inner_iterations_; }
   // Wall-clock seconds since construction: Stokes solves, sub-grid work (assembly excluded), preconditioner.
   struct Timings {
     double stokes = 0.0, subgrid = 0.0, preconditioner = 0.0;
@@ -88,10 +113,12 @@ class CoupledMobility {
 
   fcm::Solver solver_;
   KrylovParams params_;
-  Eigen::VectorXd x_;
+  Eigen::VectorXd x_, x_older_;
   SymmetricBlockMatrix near_;
   PatternCholesky cholesky_;
+  PreconditionedConjugateGradient inner_;
   int preconditioner_failures_ = 0;
+  long inner_iterations_ = 0;
   Timings timings_;
   std::vector<Vec3> f_, t_, u_, w_;
   std::vector<Mat3> s_;

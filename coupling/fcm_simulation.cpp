@@ -13,11 +13,22 @@ namespace suspend {
 
 using std::numbers::pi;
 
+namespace {
+coupling::KrylovParams krylov_params(const FcmParams& f) {
+  coupling::KrylovParams k;
+  k.tolerance = f.krylov_tolerance;
+  k.max_iterations = f.max_iterations;
+  k.warm_start = f.warm_start;
+  k.preconditioner_cutoff = f.preconditioner_cutoff;
+  return k;
+}
+}  // namespace
+
 void FcmParams::validate() const {
   if (!std::isfinite(grid_spacing)) throw InputError("fcm.grid_spacing must be finite");
   if (!(truncation_widths >= 2.0 && truncation_widths <= 10.0))
     throw InputError("fcm.truncation_widths must lie in [2, 10]");
-  coupling::KrylovParams{krylov_tolerance, max_iterations, warm_start}.validate();
+  krylov_params(*this).validate();
   coupling::SubgridParams{subgrid_cutoff, subgrid_taper_start, subgrid_model_taper_start}.validate();
   if (!(table_spacing > 0.0 && table_spacing <= 0.25)) throw InputError("fcm.table_spacing must lie in (0, 0.25]");
 }
@@ -52,7 +63,7 @@ FcmSimulation::FcmSimulation(SimulationState state, const Box& box, const Simula
   fcm::SolverOptions so;
   so.truncation_widths = fcm_.truncation_widths;
   mobility_.emplace(box_.length(), grid, so,
-                    coupling::KrylovParams{fcm_.krylov_tolerance, fcm_.max_iterations, fcm_.warm_start});
+                    krylov_params(fcm_));
   if (fcm_.subgrid) {
     coupling::FcmPairTableParams tp;
     tp.grid_spacing = box_.length().x() / grid[0];
@@ -65,17 +76,15 @@ FcmSimulation::FcmSimulation(SimulationState state, const Box& box, const Simula
   }
   range_ = std::max(interaction_range(params_.contact), subgrid_ ? subgrid_->range() : 0.0);
   list_ = VerletList(range_, params_.skin);
-  if (state_.warm_start.size() == 11 * p.size())
-    mobility_->set_warm_start(Eigen::Map<const Eigen::VectorXd>(state_.warm_start.data(),
-                                                               static_cast<Eigen::Index>(state_.warm_start.size())));
+  if (state_.warm_start.size() == 11 * p.size() || state_.warm_start.size() == 22 * p.size())
+    mobility_->set_warm_start_state(state_.warm_start);
   state_.warm_start.clear();
 }
 
 SimulationState FcmSimulation::state_with_contacts() const {
   SimulationState s = state_;
   s.contacts = history_.entries();
-  const Eigen::VectorXd& x = mobility_->warm_start();
-  s.warm_start.assign(x.data(), x.data() + x.size());
+  s.warm_start = mobility_->warm_start_state();
   return s;
 }
 

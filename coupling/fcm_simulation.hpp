@@ -35,7 +35,9 @@ struct FcmParams {
   double truncation_widths = 4.5;  // Gaussian envelopes cut at this many sigma_M (fcm::SolverOptions)
   double krylov_tolerance = 1e-4;  // relative residual of the coupled solve (coupled_mobility.hpp)
   int max_iterations = 200;        // GMRES iterations (one Stokes solve each) before NumericalError
-  bool warm_start = true;          // start from the previous step's velocities and stresslets
+  bool warm_start = true;          // start from the previous steps' velocities and stresslets (extrapolated);
+                                   // SimulationState::warm_start holds 11 or 22 values per particle
+  double preconditioner_cutoff = 2.2;  // s' below which pairs enter the GMRES near-field preconditioner
   bool subgrid = true;             // sub-grid lubrication (false: FCM alone)
   double subgrid_cutoff = 3.5;     // s' = 2r/(a_i + a_j) beyond which the correction is zero
   double subgrid_taper_start = 2.5;        // s' where the correction starts tapering to zero (equal spheres)

@@ -4,7 +4,9 @@
 // an operator application on the initial residual; here the caller passes the initial residual r0 = b - A x0
 // (which its warm start costs anyway) and the stopping test is on the true residual norm |r0 - A dx|, which right
 // preconditioning leaves unchanged.
-//   apply(v, out): out = A v;   precondition(v, out): out = P^-1 v  (any fixed linear operator).
+//   apply(v, out): out = A v;   precondition(v, out): out ~ P^-1 v.
+// The preconditioned vectors z_j are kept and dx = Z y, so the preconditioner may change from one iteration to the
+// next (flexible GMRES, Saad, SIAM J. Sci. Comput. 14, 461 (1993)): e.g. an inexact inner iterative solve.
 // Solves A dx = r0 for dx; stops when |r0 - A dx| <= tolerance or after max_iterations.
 #pragma once
 #include <Eigen/Dense>

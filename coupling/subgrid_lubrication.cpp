@@ -78,6 +78,7 @@ void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const st
   normal_.clear();
   lever_i_.clear();
   lever_j_.clear();
+  s_.clear();
   delta_r_.clear();
   delta_strain_.clear();
   Mat3 e_hat = Mat3::Zero();
@@ -92,6 +93,7 @@ void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const st
     normal_.push_back(g.n);
     lever_i_.push_back(g.lever_i());
     lever_j_.push_back(g.lever_j());
+    s_.push_back(s);
     delta_r_.push_back(pair_resistance(g.a_i, g.a_j, g.n, si, sj));
     delta_strain_.push_back(pair_strain_forces(g.a_i, g.a_j, g.n, si, sj, e_hat, e_hat));
   }
@@ -129,8 +131,12 @@ Mat3 SubgridLubrication::stress(const Eigen::VectorXd& dv, double shear_rate) co
   return sum;
 }
 
-void SubgridLubrication::resistance_matrix(const std::vector<double>& radius, SymmetricBlockMatrix& m) const {
-  m.set_structure(radius.size(), links_);
+void SubgridLubrication::resistance_matrix(const std::vector<double>& radius, double s_max,
+                                           SymmetricBlockMatrix& m) {
+  near_links_.clear();
+  for (std::size_t k = 0; k < links_.size(); ++k)
+    if (s_[k] < s_max) near_links_.push_back(links_[k]);
+  m.set_structure(radius.size(), near_links_);
   auto& diag = m.diagonal();
   for (std::size_t i = 0; i < radius.size(); ++i) {
     const double a = radius[i];
@@ -138,10 +144,12 @@ void SubgridLubrication::resistance_matrix(const std::vector<double>& radius, Sy
     diag[i].diagonal() << Vec3::Constant(6.0 * std::numbers::pi * a), Vec3::Constant(8.0 * std::numbers::pi * a * a * a);
   }
   auto& coupling = m.coupling();
+  std::size_t c = 0;
   for (std::size_t k = 0; k < links_.size(); ++k) {
+    if (!(s_[k] < s_max)) continue;
     diag[links_[k].i] += delta_r_[k].block<6, 6>(0, 0);
     diag[links_[k].j] += delta_r_[k].block<6, 6>(6, 6);
-    coupling[k] = delta_r_[k].block<6, 6>(0, 6);
+    coupling[c++] = delta_r_[k].block<6, 6>(0, 6);
   }
 }
 

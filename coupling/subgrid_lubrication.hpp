@@ -62,9 +62,9 @@ class SubgridLubrication {
   void add_strain_forces(double shear_rate, Eigen::VectorXd& f) const;
   // Sum of the pair force dipoles for disturbance velocities dv and shear rate (stress contract above).
   Mat3 stress(const Eigen::VectorXd& dv, double shear_rate) const;
-  // Forces on j per corrected pair (for diagnostics), same convention.
-  // R_Stokes + sum Delta_R as a symmetric block matrix (the Krylov preconditioner), R_Stokes = diag(6 pi a, 8 pi a^3).
-  void resistance_matrix(const std::vector<double>& radius, SymmetricBlockMatrix& m) const;
+  // R_Stokes + sum Delta_R over the pairs with s' < s_max as a symmetric block matrix (the Krylov preconditioner),
+  // R_Stokes = diag(6 pi a, 8 pi a^3). Restricting it to the close pairs keeps its Cholesky factor sparse.
+  void resistance_matrix(const std::vector<double>& radius, double s_max, SymmetricBlockMatrix& m);
 
  private:
   struct SpeciesPair {
@@ -82,7 +82,8 @@ class SubgridLubrication {
 
   std::vector<BlockLink> links_;
   std::vector<Vec3> normal_;
-  std::vector<double> lever_i_, lever_j_;
+  std::vector<double> lever_i_, lever_j_, s_;
+  std::vector<BlockLink> near_links_;
   std::vector<Matrix12> delta_r_;
   std::vector<Vector12> delta_strain_;  // for unit shear rate
 };

@@ -4,7 +4,8 @@
 //    tests/data/two_sphere_resistance_table.txt, s' = 2.001);
 //  * a dilute random suspension without contacts has eta_r = 1 + 2.5 phi (Einstein; the O(phi^2) term, 5 phi^2
 //    with full hydrodynamics, is 2% of the increment at phi = 0.008 and is inside the tolerance);
-//  * a short sheared run of 50 spheres is deterministic (two runs agree bit for bit) and finite.
+//  * a short sheared run of 50 spheres is deterministic (two runs agree bit for bit) and finite, and a run
+//    restarted from a checkpoint (state_with_contacts, warm start included) repeats the uninterrupted one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -116,4 +117,31 @@ TEST(CouplingSimulation, ShortShearedRunIsDeterministicAndFinite) {
   const double phi = 50 * 4.0 / 3.0 * pi / box.volume();
   std::cout << "phi = " << phi << ", eta_r = " << sa(0, 1) << " after strain " << a.strain << "\n";
   EXPECT_GT(sa(0, 1), 1.0 + 2.5 * phi);  // interactions only add dissipation
+}
+
+TEST(CouplingSimulation, RestartFromACheckpointRepeatsTheUninterruptedRun) {
+  const Box box(9, 9, 9);
+  Rng rng(11);
+  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+  std::vector<Vec3> pos;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        pos.push_back(Vec3(1.5 + 3.0 * i + jitter(rng), 1.5 + 3.0 * j + jitter(rng), 1.5 + 3.0 * k + jitter(rng)));
+  SimulationParams params;
+  params.time_step.max = 0.01;
+  FcmSimulation whole(state_of(pos, std::vector<double>(pos.size(), 1.0)), box, params, fcm_params());
+  SimulationState checkpoint;
+  for (int s = 0; s < 6; ++s) {
+    if (s == 3) checkpoint = whole.state_with_contacts();
+    whole.evaluate();
+    whole.advance();
+  }
+  FcmSimulation resumed(checkpoint, box, params, fcm_params());
+  for (int s = 3; s < 6; ++s) {
+    resumed.evaluate();
+    resumed.advance();
+  }
+  for (std::size_t i = 0; i < pos.size(); ++i)
+    EXPECT_EQ(resumed.state().particles.position[i], whole.state().particles.position[i]) << i;
 }
