@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <tuple>
 
 #include "core/error.hpp"
 #include "coupling/gmres.hpp"
@@ -47,6 +48,25 @@ CoupledMobility::CoupledMobility(const Vec3& box_length, std::array<int, 3> grid
                                  const KrylovParams& krylov)
     : solver_(box_length, grid, fcm), params_(krylov) {
   params_.validate();
+}
+
+void CoupledMobility::solve_parts(const CoupledProblem& problem, SubgridLubrication* subgrid,
+                                  CoupledResult& shear_part, CoupledResult& force_part) {
+  CoupledProblem shear = problem, force = problem;
+  shear.shear_rate = 1.0;
+  shear.forces = {};
+  shear.torques = {};
+  force.shear_rate = 0.0;
+  for (auto [pb, ws, out] : {std::tuple{&shear, &shear_warm_, &shear_part}, std::tuple{&force, &force_warm_, &force_part}}) {
+    exchange(*ws);
+    try {
+      solve(*pb, subgrid, *out);
+    } catch (...) {
+      exchange(*ws);
+      throw;
+    }
+    exchange(*ws);
+  }
 }
 
 std::vector<double> CoupledMobility::warm_start_state() const {

@@ -78,6 +78,12 @@ class CoupledMobility {
   // subgrid: assembled for this configuration (nullptr: FCM alone). Throws NumericalError if GMRES does not
   // converge or the solution is not finite.
   void solve(const CoupledProblem& problem, SubgridLubrication* subgrid, CoupledResult& out);
+  // The two linear parts separately, each with its own warm start (for imposed-stress control, where gammadot is
+  // chosen after the solve): shear_part for unit shear rate without forces, force_part for the forces without
+  // shear (problem.shear_rate is ignored). The solution for (gammadot, F) is gammadot shear_part + force_part in
+  // every output (velocities, spins, stresslets, subgrid_stress; the ambient flow is linear in gammadot).
+  void solve_parts(const CoupledProblem& problem, SubgridLubrication* subgrid, CoupledResult& shear_part,
+                   CoupledResult& force_part);
 
   const Eigen::VectorXd& warm_start() const { return x_; }
   // Everything the next warm start depends on (the last solution, and the one before it when extrapolating), for
@@ -114,6 +120,14 @@ class CoupledMobility {
   fcm::Solver solver_;
   KrylovParams params_;
   Eigen::VectorXd x_, x_older_;
+  struct WarmStart {
+    Eigen::VectorXd last, older;
+  };
+  WarmStart shear_warm_, force_warm_;
+  void exchange(WarmStart& w) {
+    std::swap(x_, w.last);
+    std::swap(x_older_, w.older);
+  }
   SymmetricBlockMatrix near_;
   PatternCholesky cholesky_;
   PreconditionedConjugateGradient inner_;
