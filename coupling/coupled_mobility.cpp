@@ -1,0 +1,254 @@
+#include "coupling/coupled_mobility.hpp"
+
+#include <omp.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <tuple>
+
+#include "core/error.hpp"
+#include "coupling/gmres.hpp"
+
+namespace suspend::coupling {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+using Index = Eigen::Index;
+
+}  // namespace
+
+const std::array<Mat3, 5>& traceless_basis() {
+  static const std::array<Mat3, 5> basis = [] {
+    std::array<Mat3, 5> b;
+    for (auto& m : b) m.setZero();
+    const double r2 = 1.0 / std::sqrt(2.0), r6 = 1.0 / std::sqrt(6.0);
+    b[0](0, 0) = r2;
+    b[0](1, 1) = -r2;
+    b[1](0, 0) = b[1](1, 1) = -r6;
+    b[1](2, 2) = 2.0 * r6;
+    b[2](0, 1) = b[2](1, 0) = r2;
+    b[3](0, 2) = b[3](2, 0) = r2;
+    b[4](1, 2) = b[4](2, 1) = r2;
+    return b;
+  }();
+  return basis;
+}
+
+void KrylovParams::validate() const {
+  if (!(tolerance > 0.0 && tolerance < 1.0)) throw InputError("fcm.krylov_tolerance must lie in (0, 1)");
+  if (max_iterations < 1) throw InputError("fcm.krylov_max_iterations must be at least 1");
+  if (!(preconditioner_cutoff >= 2.0)) throw InputError("fcm.preconditioner_cutoff must be >= 2");
+  if (!(inner_tolerance > 0.0 && inner_tolerance < 1.0)) throw InputError("fcm.inner_tolerance must lie in (0, 1)");
+  if (inner_max_iterations < 1) throw InputError("fcm.inner_max_iterations must be at least 1");
+}
+
+CoupledMobility::CoupledMobility(const Vec3& box_length, std::array<int, 3> grid, const fcm::SolverOptions& fcm,
+                                 const KrylovParams& krylov)
+    : solver_(box_length, grid, fcm), params_(krylov) {
+  params_.validate();
+}
+
+void CoupledMobility::solve_parts(const CoupledProblem& problem, SubgridLubrication* subgrid,
+                                  CoupledResult& shear_part, CoupledResult& force_part) {
+  CoupledProblem shear = problem, force = problem;
+  shear.shear_rate = 1.0;
+  shear.forces = {};
+  shear.torques = {};
+  force.shear_rate = 0.0;
+  for (auto [pb, ws, out] : {std::tuple{&shear, &shear_warm_, &shear_part}, std::tuple{&force, &force_warm_, &force_part}}) {
+    exchange(*ws);
+    try {
+      solve(*pb, subgrid, *out);
+    } catch (...) {
+      exchange(*ws);
+      throw;
+    }
+    exchange(*ws);
+  }
+}
+
+std::vector<double> CoupledMobility::warm_start_state() const {
+  std::vector<double> s(x_.data(), x_.data() + x_.size());
+  if (x_older_.size() == x_.size()) s.insert(s.end(), x_older_.data(), x_older_.data() + x_older_.size());
+  return s;
+}
+
+void CoupledMobility::set_warm_start_state(const std::vector<double>& state) {
+  forget_warm_start();
+  if (state.size() % 11 != 0) throw InputError("coupling: warm start must hold 11 or 22 values per particle");
+  const bool both = state.size() % 22 == 0 && !state.empty();
+  const Eigen::Index half = static_cast<Eigen::Index>(both ? state.size() / 2 : state.size());
+  x_ = Eigen::Map<const Eigen::VectorXd>(state.data(), half);
+  if (both) x_older_ = Eigen::Map<const Eigen::VectorXd>(state.data() + half, half);
+}
+
+void CoupledMobility::stokes(const CoupledProblem& pb, const Eigen::VectorXd& f, const Eigen::VectorXd& s,
+                             Eigen::VectorXd& dv, Eigen::VectorXd& e) {
+  const std::size_t n = pb.positions.size();
+  const auto& b = traceless_basis();
+  f_.resize(n);
+  t_.resize(n);
+  s_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Index o = 6 * static_cast<Index>(i);
+    f_[i] = f.segment<3>(o);
+    t_[i] = f.segment<3>(o + 3);
+    Mat3 m = Mat3::Zero();
+    for (int k = 0; k < 5; ++k) m += s(5 * static_cast<Index>(i) + k) * b[k];
+    s_[i] = m;
+  }
+  const double t0 = omp_get_wtime();
+  const fcm::Disturbance d = solver_.apply(pb.positions, pb.radii, f_, t_, s_, pb.shear_offset);
+  timings_.stokes += omp_get_wtime() - t0;
+  ++timings_.solves;
+  dv.resize(6 * static_cast<Index>(n));
+  e.resize(5 * static_cast<Index>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    dv.segment<3>(6 * static_cast<Index>(i)) = d.velocities[i];
+    dv.segment<3>(6 * static_cast<Index>(i) + 3) = d.angular_velocities[i];
+    for (int k = 0; k < 5; ++k) e(5 * static_cast<Index>(i) + k) = (b[k].array() * d.strain_rates[i].array()).sum();
+  }
+}
+
+void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgrid, CoupledResult& out) {
+  const std::size_t n = pb.positions.size();
+  if (pb.radii.size() != n || (!pb.forces.empty() && pb.forces.size() != n) ||
+      (!pb.torques.empty() && pb.torques.size() != n))
+    throw InputError("coupling: positions, radii, forces and torques need one entry per particle");
+  const Index nv = 6 * static_cast<Index>(n), ns = 5 * static_cast<Index>(n);
+  const auto& basis = traceless_basis();
+  Mat3 e_inf = Mat3::Zero();
+  e_inf(0, 1) = e_inf(1, 0) = 0.5 * pb.shear_rate;
+  Eigen::VectorXd e_inf_coeff(5);
+  for (int k = 0; k < 5; ++k) e_inf_coeff(k) = (basis[k].array() * e_inf.array()).sum();
+
+  // Known forces: external plus the sub-grid strain forces.
+  Eigen::VectorXd f0 = Eigen::VectorXd::Zero(nv);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!pb.forces.empty()) f0.segment<3>(6 * static_cast<Index>(i)) = pb.forces[i];
+    if (!pb.torques.empty()) f0.segment<3>(6 * static_cast<Index>(i) + 3) = pb.torques[i];
+  }
+  double t0 = omp_get_wtime();
+  if (subgrid) subgrid->add_strain_forces(pb.shear_rate, f0);
+  timings_.subgrid += omp_get_wtime() - t0;
+
+  if (!params_.warm_start || x_.size() != nv + ns) {
+    x_ = Eigen::VectorXd::Zero(nv + ns);
+    x_older_.resize(0);
+  }
+  const Eigen::VectorXd last = x_;
+  if (params_.extrapolate && x_older_.size() == x_.size()) x_ = 2.0 * x_ - x_older_;
+  // Preconditioner: (R_Stokes + sum Delta_R)^-1 R_Stokes on the velocities, the isolated stresslet on the strains.
+  std::vector<double> radius(pb.radii.begin(), pb.radii.end());
+  Eigen::VectorXd r_stokes(nv), s_scale(ns);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = radius[i];
+    r_stokes.segment<3>(6 * static_cast<Index>(i)).setConstant(6.0 * pi * a);
+    r_stokes.segment<3>(6 * static_cast<Index>(i) + 3).setConstant(8.0 * pi * a * a * a);
+    s_scale.segment<5>(5 * static_cast<Index>(i)).setConstant(20.0 / 3.0 * pi * a * a * a);
+  }
+  bool near_ok = false;
+  t0 = omp_get_wtime();
+  if (subgrid && subgrid->corrected_pairs() > 0) {
+    subgrid->resistance_matrix(radius, params_.preconditioner_cutoff, near_);
+    try {
+      if (params_.near_field == KrylovParams::NearField::cholesky)
+        cholesky_.factorize(near_);
+      else
+        inner_.prepare(near_);
+      near_ok = true;
+    } catch (const NumericalError&) {
+      ++preconditioner_failures_;
+    }
+  }
+  timings_.preconditioner += omp_get_wtime() - t0;
+
+  Eigen::VectorXd f(nv), dv(nv), e(ns), rhs(nv), sol(nv);
+  auto forces_of = [&](const Eigen::VectorXd& v, const Eigen::VectorXd& base) {
+    f = base;
+    if (subgrid) {
+      const double ts = omp_get_wtime();
+      subgrid->add_velocity_forces(v, f);
+      timings_.subgrid += omp_get_wtime() - ts;
+    }
+  };
+  // Initial residual r(x) (one Stokes solve).
+  Eigen::VectorXd r0(nv + ns);
+  forces_of(x_.head(nv), f0);
+  stokes(pb, f, x_.tail(ns), dv, e);
+  r0.head(nv) = dv - x_.head(nv);
+  for (std::size_t i = 0; i < n; ++i)
+    r0.segment<5>(nv + 5 * static_cast<Index>(i)) = e_inf_coeff + e.segment<5>(5 * static_cast<Index>(i));
+  double scale2 = r0.squaredNorm();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = radius[i];
+    scale2 += e_inf.squaredNorm();
+    scale2 += (f0.segment<3>(6 * static_cast<Index>(i)) / (6.0 * pi * a * a)).squaredNorm();
+    scale2 += (f0.segment<3>(6 * static_cast<Index>(i) + 3) / (8.0 * pi * a * a * a)).squaredNorm();
+  }
+  const double scale = std::sqrt(scale2);
+  const Eigen::VectorXd zero_f = Eigen::VectorXd::Zero(nv);
+
+  auto apply = [&](const Eigen::VectorXd& v, Eigen::VectorXd& result) {
+    forces_of(v.head(nv), zero_f);
+    stokes(pb, f, v.tail(ns), dv, e);
+    result.resize(nv + ns);
+    result.head(nv) = v.head(nv) - dv;
+    result.tail(ns) = -e;
+  };
+  auto precondition = [&](const Eigen::VectorXd& v, Eigen::VectorXd& result) {
+    result.resize(nv + ns);
+    if (near_ok) {
+      const double tp = omp_get_wtime();
+      rhs = r_stokes.cwiseProduct(v.head(nv));
+      if (params_.near_field == KrylovParams::NearField::cholesky) {
+        cholesky_.solve(rhs, sol);
+      } else {
+        sol = v.head(nv);  // the isolated-sphere answer as the inner start
+        const ConjugateGradientReport cg = inner_.solve(near_, rhs, sol, params_.inner_tolerance,
+                                                        params_.inner_max_iterations,
+                                                        Preconditioner::symmetric_gauss_seidel);
+        inner_iterations_ += cg.iterations;
+      }
+      result.head(nv) = sol;
+      timings_.preconditioner += omp_get_wtime() - tp;
+    } else {
+      result.head(nv) = v.head(nv);
+    }
+    result.tail(ns) = s_scale.cwiseProduct(v.tail(ns));
+  };
+  Eigen::VectorXd dx;
+  const GmresReport rep = gmres(apply, precondition, r0, dx, params_.tolerance * scale, params_.max_iterations);
+  out.iterations = rep.iterations;
+  out.stokes_solves = rep.iterations + 1;
+  out.residual = scale > 0.0 ? rep.residual / scale : 0.0;
+  if (!(out.residual <= params_.tolerance)) {
+    x_ = last;
+    throw NumericalError("coupled FCM solve did not converge in " + std::to_string(rep.iterations) +
+                         " GMRES iterations (relative residual " + std::to_string(out.residual) + ")");
+  }
+  x_ += dx;
+  if (!x_.allFinite()) {
+    x_.resize(0);
+    x_older_.resize(0);
+    throw NumericalError("coupled FCM solve: non-finite solution");
+  }
+
+  x_older_ = last;
+  out.velocities.resize(n);
+  out.angular_velocities.resize(n);
+  out.stresslets.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Index o = 6 * static_cast<Index>(i);
+    out.velocities[i] = x_.segment<3>(o) + Vec3(pb.shear_rate * pb.positions[i].y(), 0.0, 0.0);
+    out.angular_velocities[i] = x_.segment<3>(o + 3) + Vec3(0.0, 0.0, -0.5 * pb.shear_rate);
+    Mat3 m = Mat3::Zero();
+    for (int k = 0; k < 5; ++k) m += x_(nv + 5 * static_cast<Index>(i) + k) * basis[k];
+    out.stresslets[i] = m;
+  }
+  out.subgrid_stress = subgrid ? subgrid->stress(x_.head(nv), pb.shear_rate) : Mat3::Zero();
+}
+
+}  // namespace suspend::coupling

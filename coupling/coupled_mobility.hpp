@@ -1,0 +1,144 @@
+// The coupled velocity solve: FCM mobility + sub-grid lubrication resistance + given forces, solved matrix-free
+// by right-preconditioned GMRES in one Krylov space for the velocities and the rigidity stresslets together
+// (DESIGN.md section 7; docs/coupling.md).
+//
+// CONTRACT
+//  * Unknowns x = (dV_i, s_i): dV_i = (U_i - U_inf(x_i), Omega_i - Omega_inf) (6 per particle) and the FCM
+//    stresslet S_i = sum_k s_ik B_k in an orthonormal basis of traceless symmetric tensors (5 per particle).
+//  * Equations (F_i: force and torque the particle exerts on the fluid = external + sub-grid, all ON the particle):
+//        F = F_ext + gammadot Delta_R_FE : E_hat - Delta_R dV                        (force balance, zero inertia)
+//        dV = U'(F, S),   E_inf + E'(F, S) = 0                                     (FCM mobility, rigidity)
+//    with (U', E') one Stokes solve (fcm::Solver::apply). The residual of a guess costs one Stokes solve:
+//        r(x) = (U'(F(x), S) - dV, B : (E_inf + E'(F(x), S))),
+//    and the operator A x = (dV - U'(-Delta_R dV, S), -B : E'(-Delta_R dV, S)) one more per GMRES iteration.
+//    The problem is linear in (gammadot, F_ext): x = gammadot x_shear + x_force (solve_parts).
+//  * Preconditioner (right): the isolated-sphere FCM response plus the exact pair correction,
+//        P^-1 (r_v, r_s) = ((R_Stokes + sum' Delta_R)^-1 R_Stokes r_v, (20/3) pi a^3 r_s),
+//    sum' over the pairs with s' < preconditioner_cutoff (the stiff lubrication pairs; all pairs would make the
+//    Cholesky factor dense: 2.2 s per step at phi = 0.45 with the 3.5 cutoff), the first block by block-SGS
+//    conjugate gradients to a loose tolerance (default; gmres.hpp is flexible: it keeps the preconditioned vectors)
+//    or by sparse Cholesky (dem/integrate/; either falls back to identity if the near-field matrix is not positive
+//    definite, counted in preconditioner_failures()).
+//  * Stopping: |r| <= tolerance * scale, scale^2 = |r0|^2 + sum_i [ |E_inf|^2 + (|F_i| / 6 pi a_i)^2 / a_i^2 +
+//    (|T_i| / 8 pi a_i^3)^2 ] (strain-rate units, like the FCM rigidity solve).
+//  * Warm start: the previous solution if the particle count matches (set_warm_start for restarts), or, with
+//    `extrapolate` and two previous solutions, 2 x_n - x_{n-1} (the particles move smoothly; steps of similar size).
+// Units: eta = 1, lengths in a_1.
+#pragma once
+#include <array>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "coupling/subgrid_lubrication.hpp"
+#include "dem/integrate/conjugate_gradient.hpp"
+#include "dem/integrate/sparse_cholesky.hpp"
+#include "fcm/solver.hpp"
+
+namespace suspend::coupling {
+
+struct KrylovParams {
+  double tolerance = 1e-4;   // relative residual (contract above)
+  int max_iterations = 200;  // GMRES iterations (one Stokes solve each) before NumericalError
+  bool warm_start = true;
+  bool extrapolate = true;   // warm start from the linear extrapolation of the last two solutions
+  double preconditioner_cutoff = 2.2;  // s' below which a pair's correction enters the near-field preconditioner
+  // Near-field block of the preconditioner: sparse Cholesky (exact) or a few block-SGS conjugate-gradient
+  // iterations to inner_tolerance (inexact and varying, which the flexible GMRES of gmres.hpp allows).
+  enum class NearField { cholesky, conjugate_gradient };
+  NearField near_field = NearField::conjugate_gradient;
+  double inner_tolerance = 1e-2;
+  int inner_max_iterations = 50;
+  void validate() const;     // throws InputError naming the key (fcm.krylov_*)
+};
+
+struct CoupledProblem {
+  std::span<const Vec3> positions{};
+  std::span<const double> radii{};
+  std::span<const Vec3> forces{};   // external, ON the particles; empty: zero
+  std::span<const Vec3> torques{};  // empty: zero
+  double shear_rate = 0.0;
+  double shear_offset = 0.0;
+};
+
+struct CoupledResult {
+  std::vector<Vec3> velocities, angular_velocities;  // lab frame
+  std::vector<Mat3> stresslets;                       // FCM rigidity stresslets
+  Mat3 subgrid_stress = Mat3::Zero();                 // sum of the sub-grid pair dipoles (not divided by V)
+  int iterations = 0;                                 // GMRES iterations
+  int stokes_solves = 0;                              // iterations + 1 (the initial residual)
+  double residual = 0.0;                              // |r| / scale at exit
+};
+
+class CoupledMobility {
+ public:
+  CoupledMobility(const Vec3& box_length, std::array<int, 3> grid, const fcm::SolverOptions& fcm,
+                  const KrylovParams& krylov);
+
+  // subgrid: assembled for this configuration (nullptr: FCM alone). Throws NumericalError if GMRES does not
+  // converge or the solution is not finite.
+  void solve(const CoupledProblem& problem, SubgridLubrication* subgrid, CoupledResult& out);
+  // The two linear parts separately, each with its own warm start (for imposed-stress control, where gammadot is
+  // chosen after the solve): shear_part for unit shear rate without forces, force_part for the forces without
+  // shear (problem.shear_rate is ignored). The solution for (gammadot, F) is gammadot shear_part + force_part in
+  // every output (velocities, spins, stresslets, subgrid_stress; the ambient flow is linear in gammadot).
+  void solve_parts(const CoupledProblem& problem, SubgridLubrication* subgrid, CoupledResult& shear_part,
+                   CoupledResult& force_part);
+
+  const Eigen::VectorXd& warm_start() const { return x_; }
+  // Everything the next warm start depends on (the last solution, and the one before it when extrapolating), for
+  // checkpoints: a restarted run then repeats the uninterrupted one bit for bit.
+  std::vector<double> warm_start_state() const;
+  void set_warm_start_state(const std::vector<double>& state);
+  void forget_warm_start() {
+    x_.resize(0);
+    x_older_.resize(0);
+  }
+  fcm::Solver& solver() { return solver_; }
+  const KrylovParams& params() const { return params_; }
+  void set_params(const KrylovParams& p) {
+    p.validate();
+    params_ = p;
+  }
+  int preconditioner_failures() const { return preconditioner_failures_; }
+  int preconditioner_analyses() const { return cholesky_.analyses(); }
+  long inner_iterations() const { return inner_iterations_; }
+  // Wall-clock seconds since construction: Stokes solves, sub-grid work (assembly excluded), preconditioner.
+  struct Timings {
+    double stokes = 0.0, subgrid = 0.0, preconditioner = 0.0;
+    int solves = 0;
+  };
+  const Timings& timings() const { return timings_; }
+  void reset_timings() { timings_ = {}; }
+
+ private:
+  // One Stokes solve with forces f (6 per particle, ON the particles) and stresslet coefficients s; returns
+  // dV' (6 per particle) and the particle strain rates' coefficients e (5 per particle).
+  void stokes(const CoupledProblem& pb, const Eigen::VectorXd& f, const Eigen::VectorXd& s, Eigen::VectorXd& dv,
+              Eigen::VectorXd& e);
+
+  fcm::Solver solver_;
+  KrylovParams params_;
+  Eigen::VectorXd x_, x_older_;
+  struct WarmStart {
+    Eigen::VectorXd last, older;
+  };
+  WarmStart shear_warm_, force_warm_;
+  void exchange(WarmStart& w) {
+    std::swap(x_, w.last);
+    std::swap(x_older_, w.older);
+  }
+  SymmetricBlockMatrix near_;
+  PatternCholesky cholesky_;
+  PreconditionedConjugateGradient inner_;
+  int preconditioner_failures_ = 0;
+  long inner_iterations_ = 0;
+  Timings timings_;
+  std::vector<Vec3> f_, t_, u_, w_;
+  std::vector<Mat3> s_;
+};
+
+// Orthonormal basis of traceless symmetric 3x3 tensors (B_k : B_l = delta_kl).
+const std::array<Mat3, 5>& traceless_basis();
+
+}  // namespace suspend::coupling

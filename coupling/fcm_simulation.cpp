@@ -1,0 +1,188 @@
+#include "coupling/fcm_simulation.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace suspend {
+
+using std::numbers::pi;
+
+namespace {
+coupling::KrylovParams krylov_params(const FcmParams& f) {
+  coupling::KrylovParams k;
+  k.tolerance = f.krylov_tolerance;
+  k.max_iterations = f.max_iterations;
+  k.warm_start = f.warm_start;
+  k.preconditioner_cutoff = f.preconditioner_cutoff;
+  return k;
+}
+}  // namespace
+
+void FcmParams::validate() const {
+  if (!std::isfinite(grid_spacing)) throw InputError("fcm.grid_spacing must be finite");
+  if (!(truncation_widths >= 2.0 && truncation_widths <= 10.0))
+    throw InputError("fcm.truncation_widths must lie in [2, 10]");
+  krylov_params(*this).validate();
+  coupling::SubgridParams{subgrid_cutoff, subgrid_taper_start, subgrid_model_taper_start}.validate();
+  if (!(table_spacing > 0.0 && table_spacing <= 0.25)) throw InputError("fcm.table_spacing must lie in (0, 0.25]");
+}
+
+FcmSimulation::FcmSimulation(SimulationState state, const Box& box, const SimulationParams& params,
+                             const FcmParams& fcm)
+    : state_(std::move(state)), box_(box), params_(params), fcm_(fcm) {
+  suspend::validate(params_.contact);
+  params_.time_step.validate();
+  if (!(params_.max_overlap > 0.0)) throw InputError("run.max_overlap must be > 0");
+  fcm_.validate();
+  box_.set_strain(state_.strain);
+  const Particles& p = state_.particles;
+  if (p.size() == 0) throw InputError("fcm: no particles");
+  const auto [a_min, a_max] = std::minmax_element(p.radius.begin(), p.radius.end());
+  a_min_ = *a_min;
+  history_ = ContactHistory(p.size(), ContactHistory::capacity_for(*a_min, *a_max));
+  history_.restore(state_.contacts);
+  state_.contacts.clear();
+  species_radius_ = p.radius;
+  std::sort(species_radius_.begin(), species_radius_.end());
+  species_radius_.erase(std::unique(species_radius_.begin(), species_radius_.end()), species_radius_.end());
+  species_.resize(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i)
+    species_[i] = static_cast<int>(std::lower_bound(species_radius_.begin(), species_radius_.end(), p.radius[i]) -
+                                   species_radius_.begin());
+
+  // Grid: whole cells per side, spacing as close to h as possible.
+  const double h = fcm_.grid_spacing > 0.0 ? fcm_.grid_spacing : 0.5 * a_min_;
+  std::array<int, 3> grid{};
+  for (int d = 0; d < 3; ++d) grid[d] = std::max(8, static_cast<int>(std::lround(box_.length()[d] / h)));
+  fcm::SolverOptions so;
+  so.truncation_widths = fcm_.truncation_widths;
+  mobility_.emplace(box_.length(), grid, so,
+                    krylov_params(fcm_));
+  if (fcm_.subgrid) {
+    coupling::FcmPairTableParams tp;
+    tp.grid_spacing = box_.length().x() / grid[0];
+    tp.truncation_widths = fcm_.truncation_widths;
+    tp.ds = fcm_.table_spacing;
+    subgrid_.emplace(species_radius_,
+                     coupling::SubgridParams{fcm_.subgrid_cutoff, fcm_.subgrid_taper_start,
+                                             fcm_.subgrid_model_taper_start},
+                     params_.resistance.lubrication, tp, fcm_.cache_dir);
+  }
+  range_ = std::max(interaction_range(params_.contact), subgrid_ ? subgrid_->range() : 0.0);
+  list_ = VerletList(range_, params_.skin);
+  if (state_.warm_start.size() == 11 * p.size() || state_.warm_start.size() == 22 * p.size())
+    mobility_->set_warm_start_state(state_.warm_start);
+  state_.warm_start.clear();
+}
+
+SimulationState FcmSimulation::state_with_contacts() const {
+  SimulationState s = state_;
+  s.contacts = history_.entries();
+  s.warm_start = mobility_->warm_start_state();
+  return s;
+}
+
+void FcmSimulation::fail(const std::string& what) const {
+  std::ostringstream s;
+  s << "numerical failure at step " << state_.step << ", strain " << state_.strain << ": " << what;
+  throw NumericalError(s.str());
+}
+
+void FcmSimulation::evaluate() {
+  Particles& p = state_.particles;
+  const std::size_t n = p.size();
+  double t0 = omp_get_wtime();
+  list_.update(p.position, p.radius, box_);
+  compact_active_pairs(list_.pairs(), p, box_, range_, active_);
+  active_index_.resize(active_.size());
+  for (std::size_t k = 0; k < active_.size(); ++k) active_index_[k] = {active_[k].i, active_[k].j};
+  pair_history_.resize(active_.size());
+  history_.gather(active_index_, pair_history_);
+  const double image_velocity = params_.shear_rate * box_.length().y();
+  with_law(params_.contact, [&](const auto& law) {
+    accumulate_pair_forces(active_, p, image_velocity, law, state_.last_dt, pair_history_, sums_, pair_force_,
+                           scratch_);
+  });
+  contact_seconds_ += omp_get_wtime() - t0;
+
+  if (sums_.max_overlap > params_.max_overlap * a_min_) {
+    std::ostringstream s;
+    s << "overlap " << sums_.max_overlap << " a_1 between particles " << sums_.max_overlap_i << " and "
+      << sums_.max_overlap_j << " exceeds the bound " << params_.max_overlap * a_min_
+      << " (run.max_overlap x smallest radius); reduce the time step or stiffen the contacts";
+    fail(s.str());
+  }
+
+  t0 = omp_get_wtime();
+  if (subgrid_) subgrid_->assemble(active_, species_);
+  subgrid_seconds_ += omp_get_wtime() - t0;
+  const coupling::CoupledProblem pb{p.position, p.radius, sums_.force, sums_.torque, params_.shear_rate,
+                                    box_.shear_offset()};
+  try {
+    mobility_->solve(pb, subgrid_ ? &*subgrid_ : nullptr, result_);
+  } catch (const NumericalError& e) {
+    fail(e.what());
+  }
+  double max_speed = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    p.velocity[i] = result_.velocities[i];
+    p.angular_velocity[i] = result_.angular_velocities[i];
+    max_speed = std::max(max_speed, (p.velocity[i] - ambient_velocity(p.position[i])).norm());
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (!p.velocity[i].allFinite() || !p.angular_velocity[i].allFinite()) {
+      std::ostringstream s;
+      s << "non-finite velocity of particle " << i << " (contact force " << sums_.force[i].transpose() << ")";
+      fail(s.str());
+    }
+
+  const double volume = box_.volume();
+  stress_ = sums_.virial;
+  for (auto& m : stress_.part) m /= volume;
+  fcm::MobilityResult fcm_part;
+  fcm_part.stresslets = result_.stresslets;
+  stress_[Contribution::hydrodynamic] = mobility_->solver().bulk_stress(fcm_part, params_.shear_rate);
+  stress_[Contribution::lubrication] = result_.subgrid_stress / volume;
+
+  if (params_.time_step.mode == TimeStepParams::Mode::fixed) {
+    dt_ = params_.time_step.fixed;
+  } else {
+    dt_ = params_.time_step.max;
+    if (max_speed > 0.0) dt_ = std::min(dt_, params_.time_step.max_displacement / max_speed);
+    dt_ = std::min(dt_, params_.time_step.stability * 6.0 * pi * a_min_ / stiffness_scale(params_.contact));
+  }
+  evaluated_ = true;
+}
+
+void FcmSimulation::advance() {
+  if (!evaluated_) evaluate();
+  history_.scatter(active_index_, pair_history_);
+  Particles& p = state_.particles;
+  const std::size_t n = p.size();
+  nonaffine_.resize(n);
+  const double ly = box_.length().y();
+  for (std::size_t i = 0; i < n; ++i) {
+    nonaffine_[i] = (p.velocity[i] - ambient_velocity(p.position[i])) * dt_;
+    p.position[i] += p.velocity[i] * dt_;
+  }
+  const double dstrain = params_.shear_rate * dt_;
+  state_.strain += dstrain;
+  state_.time += dt_;
+  state_.last_dt = dt_;
+  ++state_.step;
+  box_.set_strain(state_.strain);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int crossings = box_.wrap(p.position[i]);
+    p.velocity[i].x() -= crossings * params_.shear_rate * ly;  // paper 000, eq. 16d
+  }
+  list_.record_motion(nonaffine_, dstrain);
+  evaluated_ = false;
+}
+
+}  // namespace suspend

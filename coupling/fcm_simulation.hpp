@@ -1,0 +1,111 @@
+// The FCM-resolved engine's simulation: the same interface, contact module, time-step control, failure handling
+// and outputs as the pairwise engine (dem/simulation.hpp), with the hydrodynamics replaced by the Force Coupling
+// Method plus sub-grid lubrication (DESIGN.md section 7; paper 004 sections II A-II B, II E 2).
+//
+// Force balance per particle (zero inertia): FCM hydrodynamic + sub-grid lubrication + contact = 0, solved for
+// the velocities and the rigidity stresslets together (coupled_mobility.hpp). Contact forces use the velocities of
+// the last step (as in the pairwise engine), so the solve is linear in the unknowns.
+// Bulk stress, units eta_0 gammadot_ref:
+//   hydrodynamic: 2 E_inf + (1/V) sum_i S_i (FCM stresslets; fcm::Solver::bulk_stress)
+//   lubrication:  (1/V) sum over corrected pairs of their force dipoles (subgrid_lubrication.hpp)
+//   contacts:     (1/V) sum_pairs -sym(d F_j) per Contribution (dem/pair_forces.hpp)
+// eta_r -> 1 + 2.5 phi for dilute suspensions (test_coupling_suspension_viscosity).
+// Units: eta_0 = 1, lengths in a_1, time in 1/gammadot_ref. Flow x, gradient y, vorticity z.
+//
+// A step is transactional exactly as in PairwiseSimulation: evaluate() computes everything and may throw
+// NumericalError before anything moved; advance() moves the particles.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/box.hpp"
+#include "core/stress.hpp"
+#include "coupling/coupled_mobility.hpp"
+#include "coupling/subgrid_lubrication.hpp"
+#include "dem/contact_history.hpp"
+#include "dem/pair_forces.hpp"
+#include "dem/simulation.hpp"
+#include "dem/verlet_list.hpp"
+
+namespace suspend {
+
+struct FcmParams {
+  double grid_spacing = 0.0;       // h (a_1); <= 0 means half the smallest radius. Rounded to whole cells per box side
+  double truncation_widths = 4.5;  // Gaussian envelopes cut at this many sigma_M (fcm::SolverOptions)
+  double krylov_tolerance = 1e-4;  // relative residual of the coupled solve (coupled_mobility.hpp)
+  int max_iterations = 200;        // GMRES iterations (one Stokes solve each) before NumericalError
+  bool warm_start = true;          // start from the previous steps' velocities and stresslets (extrapolated);
+                                   // SimulationState::warm_start holds 11 or 22 values per particle
+  double preconditioner_cutoff = 2.2;  // s' below which pairs enter the GMRES near-field preconditioner
+  bool subgrid = true;             // sub-grid lubrication (false: FCM alone)
+  double subgrid_cutoff = 3.5;     // s' = 2r/(a_i + a_j) beyond which the correction is zero
+  double subgrid_taper_start = 2.5;        // s' where the correction starts tapering to zero (equal spheres)
+  double subgrid_model_taper_start = 2.1;  // same for unequal spheres (singular model only)
+  double table_spacing = 0.05;     // spacing in s' of the FCM pair-resistance table
+  std::string cache_dir;           // where FCM pair tables are cached (empty: recomputed in every run)
+  void validate() const;           // throws InputError naming the key (fcm.*)
+};
+
+class FcmSimulation {
+ public:
+  FcmSimulation(SimulationState state, const Box& box, const SimulationParams& params, const FcmParams& fcm = {});
+
+  void evaluate();
+  void advance();
+
+  SimulationState state_with_contacts() const;
+  const SimulationState& state() const { return state_; }
+  const Box& box() const { return box_; }
+  const SimulationParams& params() const { return params_; }
+  double shear_rate() const { return params_.shear_rate; }
+  double time_step() const { return dt_; }
+  const StressTensors& stress() const { return stress_; }
+  double max_overlap() const { return sums_.max_overlap; }
+  int solver_iterations() const { return result_.iterations; }
+  std::size_t contact_count() const { return sums_.contacts; }
+  const std::vector<ActivePair>& active_pairs() const { return active_; }
+  const VerletList& neighbours() const { return list_; }
+  const std::vector<Vec3>& pair_forces() const { return pair_force_; }
+
+  // FCM-specific diagnostics.
+  const FcmParams& fcm_params() const { return fcm_; }
+  double solver_residual() const { return result_.residual; }
+  int stokes_solves() const { return result_.stokes_solves; }
+  std::size_t corrected_pairs() const { return subgrid_ ? subgrid_->corrected_pairs() : 0; }
+  coupling::CoupledMobility& mobility() { return *mobility_; }
+  // Wall-clock seconds of the contact-force stage and the sub-grid assembly since construction.
+  double contact_seconds() const { return contact_seconds_; }
+  double subgrid_assembly_seconds() const { return subgrid_seconds_; }
+
+ private:
+  Vec3 ambient_velocity(const Vec3& r) const { return {params_.shear_rate * r.y(), 0.0, 0.0}; }
+  [[noreturn]] void fail(const std::string& what) const;
+
+  SimulationState state_;
+  Box box_;
+  SimulationParams params_;
+  FcmParams fcm_;
+  double range_ = 0.0;
+  double a_min_ = 1.0;
+  VerletList list_;
+  ContactHistory history_;
+  std::vector<ActivePair> active_;
+  std::vector<NeighbourPair> active_index_;
+  std::vector<PairHistory> pair_history_;
+  std::vector<Vec3> pair_force_;
+  std::vector<double> species_radius_;
+  std::vector<int> species_;
+  std::optional<coupling::SubgridLubrication> subgrid_;
+  std::optional<coupling::CoupledMobility> mobility_;
+  coupling::CoupledResult result_;
+  PairSums sums_;
+  std::vector<PairSums> scratch_;
+  std::vector<Vec3> nonaffine_;
+  StressTensors stress_;
+  double dt_ = 0.0;
+  bool evaluated_ = false;
+  double contact_seconds_ = 0.0, subgrid_seconds_ = 0.0;
+};
+
+}  // namespace suspend

@@ -1,0 +1,110 @@
+// Assembly of the pair tensors from scalars and its inverse for n = e_x; conventions in pair_tensors.hpp.
+#include "coupling/pair_tensors.hpp"
+
+#include <numbers>
+
+namespace suspend::coupling {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+// Force of strain E through G^{ba}_{jki} E_jk: X (d.E.d) d + 2 Y (E d - (d.E.d) d).
+Vec3 strain_force(double scale, const Vec3& d, double x, double y, const Mat3& e) {
+  const Vec3 ed = e * d;
+  const double ded = d.dot(ed);
+  return scale * (x * ded * d + 2.0 * y * (ed - ded * d));
+}
+
+// Torque of strain E through H^{ba}_{jki} E_jk: 2 Y d x (E d).
+Vec3 strain_torque(double scale, const Vec3& d, double y, const Mat3& e) { return scale * 2.0 * y * d.cross(e * d); }
+
+}  // namespace
+
+Matrix12 pair_resistance(double a_i, double a_j, const Vec3& n, const ResistanceScalars& si,
+                         const ResistanceScalars& sj) {
+  Matrix12 r;
+  const Mat3 nn = n * n.transpose();
+  const Mat3 tt = Mat3::Identity() - nn;
+  Mat3 nx;
+  nx << 0.0, -n.z(), n.y(), n.z(), 0.0, -n.x(), -n.y(), n.x(), 0.0;
+  const double fa_i = 6.0 * pi * a_i, fa_j = 6.0 * pi * a_j;
+  const double fb_i = 4.0 * pi * a_i * a_i, fb_j = 4.0 * pi * a_j * a_j;
+  const double fc_i = 8.0 * pi * a_i * a_i * a_i, fc_j = 8.0 * pi * a_j * a_j * a_j;
+  r.block<3, 3>(0, 0) = fa_i * (si.x11a * nn + si.y11a * tt);
+  r.block<3, 3>(6, 6) = fa_j * (sj.x11a * nn + sj.y11a * tt);
+  r.block<3, 3>(0, 6) = fa_i * (si.x12a * nn + si.y12a * tt);
+  r.block<3, 3>(6, 0) = r.block<3, 3>(0, 6);
+  r.block<3, 3>(3, 3) = fc_i * (si.x11c * nn + si.y11c * tt);
+  r.block<3, 3>(9, 9) = fc_j * (sj.x11c * nn + sj.y11c * tt);
+  r.block<3, 3>(3, 9) = fc_i * (si.x12c * nn + si.y12c * tt);
+  r.block<3, 3>(9, 3) = r.block<3, 3>(3, 9);
+  // B v = Y v x d = -Y [d]_x v; seen from j, d = -n.
+  r.block<3, 3>(3, 0) = (-fb_i * si.y11b) * nx;
+  r.block<3, 3>(3, 6) = (-fb_i * si.y12b) * nx;
+  r.block<3, 3>(9, 6) = (fb_j * sj.y11b) * nx;
+  r.block<3, 3>(9, 0) = (fb_j * sj.y12b) * nx;
+  r.block<3, 3>(0, 3) = r.block<3, 3>(3, 0).transpose();
+  r.block<3, 3>(6, 3) = r.block<3, 3>(3, 6).transpose();
+  r.block<3, 3>(6, 9) = r.block<3, 3>(9, 6).transpose();
+  r.block<3, 3>(0, 9) = r.block<3, 3>(9, 0).transpose();
+  return r;
+}
+
+Vector12 pair_strain_forces(double a_i, double a_j, const Vec3& n, const ResistanceScalars& si,
+                            const ResistanceScalars& sj, const Mat3& e_i, const Mat3& e_j) {
+  Vector12 f;
+  const Vec3 m = -n;
+  const double fg_i = 4.0 * pi * a_i * a_i, fg_j = 4.0 * pi * a_j * a_j;
+  const double fh_i = 8.0 * pi * a_i * a_i * a_i, fh_j = 8.0 * pi * a_j * a_j * a_j;
+  f.segment<3>(0) = strain_force(fg_i, n, si.x11g, si.y11g, e_i) + strain_force(fg_j, m, sj.x12g, sj.y12g, e_j);
+  f.segment<3>(6) = strain_force(fg_j, m, sj.x11g, sj.y11g, e_j) + strain_force(fg_i, n, si.x12g, si.y12g, e_i);
+  f.segment<3>(3) = strain_torque(fh_i, n, si.y11h, e_i) + strain_torque(fh_j, m, sj.y12h, e_j);
+  f.segment<3>(9) = strain_torque(fh_j, m, sj.y11h, e_j) + strain_torque(fh_i, n, si.y12h, e_i);
+  return f;
+}
+
+void scalars_along_x(double a_i, double a_j, const Matrix12& r, const std::array<std::array<Mat3, 12>, 2>& s,
+                     ResistanceScalars& si, ResistanceScalars& sj) {
+  const double fa_i = 6.0 * pi * a_i, fa_j = 6.0 * pi * a_j;
+  const double fb_i = 4.0 * pi * a_i * a_i, fb_j = 4.0 * pi * a_j * a_j;
+  const double fc_i = 8.0 * pi * a_i * a_i * a_i, fc_j = 8.0 * pi * a_j * a_j * a_j;
+  // Transverse functions are averaged over the y and z directions (the grid breaks the axial symmetry slightly).
+  si.x11a = r(0, 0) / fa_i;
+  si.y11a = (r(1, 1) + r(2, 2)) / (2.0 * fa_i);
+  si.x12a = r(0, 6) / fa_i;
+  si.y12a = (r(1, 7) + r(2, 8)) / (2.0 * fa_i);
+  sj.x11a = r(6, 6) / fa_j;
+  sj.y11a = (r(7, 7) + r(8, 8)) / (2.0 * fa_j);
+  sj.x12a = r(6, 0) / fa_j;
+  sj.y12a = (r(7, 1) + r(8, 2)) / (2.0 * fa_j);
+  si.x11c = r(3, 3) / fc_i;
+  si.y11c = (r(4, 4) + r(5, 5)) / (2.0 * fc_i);
+  si.x12c = r(3, 9) / fc_i;
+  si.y12c = (r(4, 10) + r(5, 11)) / (2.0 * fc_i);
+  sj.x11c = r(9, 9) / fc_j;
+  sj.y11c = (r(10, 10) + r(11, 11)) / (2.0 * fc_j);
+  sj.x12c = r(9, 3) / fc_j;
+  sj.y12c = (r(10, 4) + r(11, 5)) / (2.0 * fc_j);
+  si.y11b = (r(4, 2) - r(5, 1)) / (2.0 * fb_i);
+  si.y12b = (r(4, 8) - r(5, 7)) / (2.0 * fb_i);
+  sj.y11b = (r(11, 7) - r(10, 8)) / (2.0 * fb_j);
+  sj.y12b = (r(11, 1) - r(10, 2)) / (2.0 * fb_j);
+  // S_a = -G^{ab} dV_b: with d = e_x (seen from i) or -e_x (from j), G e_x has xx = (2/3) X (d.e_x), G e_y has
+  // xy = Y (d.e_x), H e_z has xy = Y and H e_y has xz = -Y (factors 4 pi a^2, 8 pi a^3).
+  const auto& s_i = s[0];
+  const auto& s_j = s[1];
+  si.x11g = -1.5 * s_i[0](0, 0) / fb_i;
+  si.x12g = -1.5 * s_i[6](0, 0) / fb_i;
+  si.y11g = -(s_i[1](0, 1) + s_i[2](0, 2)) / (2.0 * fb_i);
+  si.y12g = -(s_i[7](0, 1) + s_i[8](0, 2)) / (2.0 * fb_i);
+  si.y11h = (-s_i[5](0, 1) + s_i[4](0, 2)) / (2.0 * fc_i);
+  si.y12h = (-s_i[11](0, 1) + s_i[10](0, 2)) / (2.0 * fc_i);
+  sj.x11g = 1.5 * s_j[6](0, 0) / fb_j;
+  sj.x12g = 1.5 * s_j[0](0, 0) / fb_j;
+  sj.y11g = (s_j[7](0, 1) + s_j[8](0, 2)) / (2.0 * fb_j);
+  sj.y12g = (s_j[1](0, 1) + s_j[2](0, 2)) / (2.0 * fb_j);
+  sj.y11h = (-s_j[11](0, 1) + s_j[10](0, 2)) / (2.0 * fc_j);
+  sj.y12h = (-s_j[5](0, 1) + s_j[4](0, 2)) / (2.0 * fc_j);
+}
+
+}  // namespace suspend::coupling

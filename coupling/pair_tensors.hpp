@@ -1,0 +1,49 @@
+// Pair resistance tensors from the two-sphere scalars, for any line of centres (the sub-grid correction's blocks).
+//
+// CONTRACT (identical to dem/hydro/lubrication.hpp, whose assembly is private; test_coupling_pair_tensors checks
+// that both agree to round-off):
+//  * n = (x_j - x_i)/|x_j - x_i|; generalised velocity V = (U_i, Omega_i, U_j, Omega_j), forces (F_i, T_i, F_j, T_j).
+//  * Scalars in the Kim & Karrila normalisation of dem/hydro/resistance_functions.hpp, `from_i` seen from i
+//    (lambda = a_j/a_i, d = n), `from_j` seen from j (lambda = a_i/a_j, d = -n).
+//  * pair_resistance: R with F = -R (V - V_inf) the force ON the particles; blocks A = 6 pi a (X d d + Y (I - d d)),
+//    B v = 4 pi a^2 Y (v x d), C = 8 pi a^3 (X d d + Y (I - d d)); symmetric by construction (the pair blocks are
+//    taken from i).
+//  * pair_strain_forces: R_FE : E, the forces and torques ON the particles held fixed in the strain rates E_i, E_j
+//    (G and H functions; docs/lubrication.md section 4).
+// Units: eta = 1, lengths in a_1.
+#pragma once
+#include <array>
+
+#include "core/vec.hpp"
+#include "dem/hydro/lubrication.hpp"
+#include "dem/hydro/resistance_functions.hpp"
+
+namespace suspend::coupling {
+
+using hydro::Matrix12;
+using hydro::ResistanceScalars;
+using hydro::Vector12;
+
+// The sixteen scalars the sub-grid correction carries (the M functions only enter through the strain stresslet,
+// which the FCM rigidity resolves; docs/coupling.md).
+inline constexpr std::array<double ResistanceScalars::*, 16> correction_functions{
+    &ResistanceScalars::x11a, &ResistanceScalars::x12a, &ResistanceScalars::y11a, &ResistanceScalars::y12a,
+    &ResistanceScalars::y11b, &ResistanceScalars::y12b, &ResistanceScalars::x11c, &ResistanceScalars::x12c,
+    &ResistanceScalars::y11c, &ResistanceScalars::y12c, &ResistanceScalars::x11g, &ResistanceScalars::x12g,
+    &ResistanceScalars::y11g, &ResistanceScalars::y12g, &ResistanceScalars::y11h, &ResistanceScalars::y12h};
+inline constexpr std::array<const char*, 16> correction_function_names{
+    "X11A", "X12A", "Y11A", "Y12A", "Y11B", "Y12B", "X11C", "X12C",
+    "Y11C", "Y12C", "X11G", "X12G", "Y11G", "Y12G", "Y11H", "Y12H"};
+
+Matrix12 pair_resistance(double a_i, double a_j, const Vec3& n, const ResistanceScalars& from_i,
+                         const ResistanceScalars& from_j);
+Vector12 pair_strain_forces(double a_i, double a_j, const Vec3& n, const ResistanceScalars& from_i,
+                            const ResistanceScalars& from_j, const Mat3& e_i, const Mat3& e_j);
+
+// Inverse of the two functions above for n = e_x: the scalars from a 12x12 resistance (ordering as above) and the
+// stresslet response G~ = [dS_i/dV, dS_j/dV] (S_a = -G^{ab} (V_b - V_inf_b), stresslets the particles exert on the
+// fluid). `stresslet_of_velocity[a][c]` is S_a for unit column c of V (c = 0..11).
+void scalars_along_x(double a_i, double a_j, const Matrix12& r, const std::array<std::array<Mat3, 12>, 2>& stresslet,
+                     ResistanceScalars& from_i, ResistanceScalars& from_j);
+
+}  // namespace suspend::coupling

@@ -1,0 +1,156 @@
+#include "coupling/subgrid_lubrication.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.hpp"
+
+namespace suspend::coupling {
+
+void SubgridParams::validate() const {
+  if (!(cutoff > 2.0 && cutoff <= 5.0)) throw InputError("fcm.subgrid_cutoff must lie in (2, 5] (s' = 2r/(a_i + a_j))");
+  if (!(taper_start > 2.0 && taper_start < cutoff))
+    throw InputError("fcm.subgrid_taper_start must lie in (2, fcm.subgrid_cutoff)");
+  if (!(model_taper_start > 2.0 && model_taper_start < cutoff))
+    throw InputError("fcm.subgrid_model_taper_start must lie in (2, fcm.subgrid_cutoff)");
+}
+
+SubgridLubrication::SubgridLubrication(std::vector<double> species_radius, const SubgridParams& params,
+                                       const hydro::LubricationParams& lubrication, const FcmPairTableParams& table,
+                                       const std::string& cache_dir)
+    : species_radius_(std::move(species_radius)), params_(params) {
+  params_.validate();
+  const std::size_t ns = species_radius_.size();
+  pairs_.reserve(ns * ns);
+  for (std::size_t a = 0; a < ns; ++a)
+    for (std::size_t b = 0; b < ns; ++b) {
+      const double ra = species_radius_[a], rb = species_radius_[b];
+      const bool swapped = ra > rb;
+      FcmPairTableParams tp = table;
+      tp.a_i = std::min(ra, rb);
+      tp.a_j = std::max(ra, rb);
+      tp.s_max = params_.cutoff;
+      // Only one table per unordered pair: reuse the mirror entry when it exists.
+      if (b < a) {
+        const SpeciesPair& mirror = pairs_[b * ns + a];
+        pairs_.push_back({ExactPairResistance(tp.a_i, tp.a_j, lubrication), mirror.fcm, swapped});
+      } else {
+        pairs_.push_back({ExactPairResistance(tp.a_i, tp.a_j, lubrication),
+                          FcmPairTable::load_or_compute(tp, cache_dir), swapped});
+      }
+      range_ = std::max(range_, 0.5 * (params_.cutoff - 2.0) * (ra + rb));
+    }
+}
+
+double SubgridLubrication::taper(double s, bool tabulated) const {
+  const double s0 = tabulated ? params_.taper_start : params_.model_taper_start, s1 = params_.cutoff;
+  if (s <= s0) return 1.0;
+  if (s >= s1) return 0.0;
+  const double t = (s - s0) / (s1 - s0);
+  return 1.0 - t * t * (3.0 - 2.0 * t);
+}
+
+void SubgridLubrication::scalars(int si, int sj, double gap, ResistanceScalars& from_i,
+                                 ResistanceScalars& from_j) const {
+  const SpeciesPair& p = pair_of(si, sj);
+  const double a_i = species_radius_[si], a_j = species_radius_[sj];
+  const double s = 2.0 * (gap + a_i + a_j) / (a_i + a_j);
+  from_i = {};
+  from_j = {};
+  const double w = taper(s, p.exact.tabulated());
+  if (w == 0.0) return;
+  ResistanceScalars ei, ej, fi, fj;
+  p.exact.scalars(gap, ei, ej);  // tables are ordered small sphere first
+  p.fcm.scalars(s, fi, fj);
+  if (p.swapped) {
+    std::swap(ei, ej);
+    std::swap(fi, fj);
+  }
+  for (auto f : correction_functions) {
+    from_i.*f = w * (ei.*f - fi.*f);
+    from_j.*f = w * (ej.*f - fj.*f);
+  }
+}
+
+void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const std::vector<int>& species) {
+  links_.clear();
+  normal_.clear();
+  lever_i_.clear();
+  lever_j_.clear();
+  s_.clear();
+  delta_r_.clear();
+  delta_strain_.clear();
+  Mat3 e_hat = Mat3::Zero();
+  e_hat(0, 1) = e_hat(1, 0) = 0.5;
+  for (const ActivePair& pr : pairs) {
+    const PairGeometry& g = pr.geometry;
+    const double s = 2.0 * g.r / (g.a_i + g.a_j);
+    if (s >= params_.cutoff) continue;
+    ResistanceScalars si, sj;
+    scalars(species[pr.i], species[pr.j], g.gap(), si, sj);
+    links_.push_back({pr.i, pr.j});
+    normal_.push_back(g.n);
+    lever_i_.push_back(g.lever_i());
+    lever_j_.push_back(g.lever_j());
+    s_.push_back(s);
+    delta_r_.push_back(pair_resistance(g.a_i, g.a_j, g.n, si, sj));
+    delta_strain_.push_back(pair_strain_forces(g.a_i, g.a_j, g.n, si, sj, e_hat, e_hat));
+  }
+}
+
+Vector12 SubgridLubrication::pair_forces(std::size_t k, const Eigen::VectorXd& dv, double shear_rate) const {
+  Vector12 v;
+  v << dv.segment<6>(6 * static_cast<Eigen::Index>(links_[k].i)), dv.segment<6>(6 * static_cast<Eigen::Index>(links_[k].j));
+  return -delta_r_[k] * v + shear_rate * delta_strain_[k];
+}
+
+void SubgridLubrication::add_velocity_forces(const Eigen::VectorXd& dv, Eigen::VectorXd& f) const {
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    const Vector12 fk = pair_forces(k, dv, 0.0);
+    f.segment<6>(6 * static_cast<Eigen::Index>(links_[k].i)) += fk.head<6>();
+    f.segment<6>(6 * static_cast<Eigen::Index>(links_[k].j)) += fk.tail<6>();
+  }
+}
+
+void SubgridLubrication::add_strain_forces(double shear_rate, Eigen::VectorXd& f) const {
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    f.segment<6>(6 * static_cast<Eigen::Index>(links_[k].i)) += shear_rate * delta_strain_[k].head<6>();
+    f.segment<6>(6 * static_cast<Eigen::Index>(links_[k].j)) += shear_rate * delta_strain_[k].tail<6>();
+  }
+}
+
+Mat3 SubgridLubrication::stress(const Eigen::VectorXd& dv, double shear_rate) const {
+  Mat3 sum = Mat3::Zero();
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    const Vector12 fk = pair_forces(k, dv, shear_rate);
+    const Vec3& n = normal_[k];
+    const Mat3 dip = -lever_i_[k] * n * fk.segment<3>(0).transpose() + lever_j_[k] * n * fk.segment<3>(6).transpose();
+    sum -= 0.5 * (dip + dip.transpose());
+  }
+  return sum;
+}
+
+void SubgridLubrication::resistance_matrix(const std::vector<double>& radius, double s_max,
+                                           SymmetricBlockMatrix& m) {
+  near_links_.clear();
+  for (std::size_t k = 0; k < links_.size(); ++k)
+    if (s_[k] < s_max) near_links_.push_back(links_[k]);
+  m.set_structure(radius.size(), near_links_);
+  auto& diag = m.diagonal();
+  for (std::size_t i = 0; i < radius.size(); ++i) {
+    const double a = radius[i];
+    diag[i].setZero();
+    diag[i].diagonal() << Vec3::Constant(6.0 * std::numbers::pi * a), Vec3::Constant(8.0 * std::numbers::pi * a * a * a);
+  }
+  auto& coupling = m.coupling();
+  std::size_t c = 0;
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    if (!(s_[k] < s_max)) continue;
+    diag[links_[k].i] += delta_r_[k].block<6, 6>(0, 0);
+    diag[links_[k].j] += delta_r_[k].block<6, 6>(6, 6);
+    coupling[c++] = delta_r_[k].block<6, 6>(0, 6);
+  }
+}
+
+}  // namespace suspend::coupling
