@@ -9,4 +9,6 @@ void add_check_command(CLI::App& app);
 void add_pair_command(CLI::App& app);
 // suspend mobility: FCM velocities, angular velocities and stresslets of spheres in a periodic box.
 void add_mobility_command(CLI::App& app);
+// `suspend crossval`: one case with both hydrodynamic models, side by side (apps/cmd_crossval.cpp).
+void add_crossval_command(CLI::App& app);
 }  // namespace suspend::app

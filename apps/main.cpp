@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("suspend ") + suspend::version + " (git " + suspend::git_commit + ")");
   app.require_subcommand(1);
   suspend::app::add_run_command(app);
+  suspend::app::add_crossval_command(app);
   suspend::app::add_check_command(app);
   suspend::app::add_pair_command(app);
   suspend::app::add_mobility_command(app);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -11,6 +12,13 @@
 namespace suspend::io {
 
 namespace {
+
+// Where FCM pair-resistance tables are cached: $XDG_CACHE_HOME/suspend, else ~/.cache/suspend, else none.
+std::string default_fcm_cache_dir() {
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return std::string(x) + "/suspend";
+  if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.cache/suspend";
+  return "";
+}
 
 void read_particles(SchemaReader r, Case& c) {
   ParticlesCase& p = c.particles;
@@ -109,7 +117,19 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   }
   {
     SchemaReader h = top.child("hydrodynamics");
-    c.hydrodynamics = h.choice("model", "pairwise", {"pairwise"});
+    c.hydrodynamics = h.choice("model", "pairwise", {"pairwise", "fcm"});
+    {  // read for either model, so one case file serves `suspend crossval`; used by model fcm only
+      SchemaReader m = h.child("fcm");
+      FcmParams& f = c.fcm;
+      f.grid_spacing = m.number("grid_spacing", 0.5, Range::positive());
+      f.truncation_widths = m.number("truncation_widths", f.truncation_widths, Range::closed(2.0, 8.0));
+      f.krylov_tolerance = m.number("tolerance", f.krylov_tolerance, Range::open(0.0, 1.0));
+      f.max_iterations = static_cast<int>(m.integer("max_iterations", f.max_iterations, 1, 100'000));
+      f.subgrid = m.boolean("subgrid", f.subgrid);
+      f.subgrid_cutoff = m.number("subgrid_cutoff", f.subgrid_cutoff, Range::open(2.0, 10.0));
+      f.cache_dir = m.text("cache_dir", default_fcm_cache_dir());
+      m.finish();
+    }
     ResistanceSolverParams& rs = c.simulation.resistance;
     SchemaReader l = h.child("lubrication");
     c.simulation.lubrication = l.boolean("enabled", true);
@@ -175,6 +195,15 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   }
   top.finish();
   c.simulation.validate();
+  if (c.hydrodynamics == "fcm") {
+    if (c.simulation.control != FlowControl::rate)
+      throw InputError("flow.control = stress is not yet available with hydrodynamics.model = fcm (use rate)");
+    if (c.flow != "simple_shear")
+      throw InputError("flow.type = " + c.flow + " is not available with hydrodynamics.model = fcm (use simple_shear)");
+    if (c.simulation.integrator != Integrator::overdamped)
+      throw InputError("run.integrator = inertial is not available with hydrodynamics.model = fcm (use overdamped)");
+    c.fcm.validate();
+  }
   return c;
 }
 
@@ -220,6 +249,16 @@ YAML::Node to_yaml(const Case& c) {
     n["flow"]["periods"] = c.simulation.wave_periods;
   }
   n["hydrodynamics"]["model"] = c.hydrodynamics;
+  if (c.hydrodynamics == "fcm") {
+    YAML::Node m = n["hydrodynamics"]["fcm"];
+    m["grid_spacing"] = number_node(c.fcm.grid_spacing);
+    m["truncation_widths"] = number_node(c.fcm.truncation_widths);
+    m["tolerance"] = number_node(c.fcm.krylov_tolerance);
+    m["max_iterations"] = c.fcm.max_iterations;
+    m["subgrid"] = c.fcm.subgrid;
+    m["subgrid_cutoff"] = number_node(c.fcm.subgrid_cutoff);
+    m["cache_dir"] = c.fcm.cache_dir;
+  }
   {
     const ResistanceSolverParams& rs = c.simulation.resistance;
     YAML::Node l = n["hydrodynamics"]["lubrication"];

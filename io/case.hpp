@@ -10,6 +10,7 @@
 
 #include "core/vec.hpp"
 #include "dem/packing.hpp"
+#include "coupling/fcm_simulation.hpp"
 #include "dem/simulation.hpp"
 
 namespace suspend::io {
@@ -44,8 +45,9 @@ struct Case {
   ParticlesCase particles;
   std::optional<Vec3> box;  // given box, else derived from count and phi
   std::string flow = "simple_shear";
-  std::string hydrodynamics = "pairwise";
+  std::string hydrodynamics = "pairwise";  // "pairwise" or "fcm"
   SimulationParams simulation;
+  FcmParams fcm;  // hydrodynamics.fcm (model fcm only)
   RunCase run;
 };
 

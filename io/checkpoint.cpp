@@ -110,7 +110,7 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     p.species.assign(species.begin(), species.end());
     c.state.warm_start = h5::read_doubles(id, "solver/warm_start");
     const std::size_t warm = c.state.warm_start.size();
-    if (warm != 0 && warm != 6 * n && warm != 12 * n)
+    if (n == 0 || warm % n != 0)  // 6 or 12 (pairwise), 11 or 22 (FCM) values per particle
       throw InputError(path + ": solver/warm_start does not match the particle count");
     for (double v : c.state.warm_start)
       if (!std::isfinite(v)) throw InputError(path + ": solver/warm_start is not finite");

@@ -34,7 +34,8 @@ std::string join(const fs::path& dir, const char* name) { return (dir / name).st
 // First multiple of `every` strictly above `strain`.
 double next_multiple(double strain, double every) { return (std::floor(strain / every + 1e-9) + 1.0) * every; }
 
-Snapshot snapshot_of(const PairwiseSimulation& sim) {
+template <class Sim>
+Snapshot snapshot_of(const Sim& sim) {
   Snapshot s;
   const SimulationState& st = sim.state();
   s.step = st.step;
@@ -65,6 +66,7 @@ std::string physics_fingerprint(const Case& c) {
   n["run"].remove("threads");
   n["run"].remove("output");
   n.remove("title");
+  if (n["hydrodynamics"]["fcm"]) n["hydrodynamics"]["fcm"].remove("cache_dir");  // where, not what
   YAML::Emitter e;
   e << n;
   return e.c_str();
@@ -117,107 +119,114 @@ int run_case(const Case& c, const RunOptions& o) {
   if (state.strain >= c.run.strain)
     throw InputError("run.strain = " + exact(c.run.strain) + " is already reached by the checkpoint (strain " +
                      exact(state.strain) + "); raise it with --set run.strain=...");
-  PairwiseSimulation sim(std::move(state), box, c.simulation);
+  auto run = [&](auto& sim) -> int {
 
-  fs::create_directories(dir);
-  const std::string run_path = join(dir, "run.h5"), checkpoint_path = join(dir, "checkpoint.h5");
-  RunFile file = restarting ? RunFile::reopen(run_path, clock.series_rows, clock.snapshots)
-                            : RunFile::create(run_path, {to_yaml_text(c), threads});
-  Progress progress(Progress::detect(o.quiet), c.run.strain, sim.state().strain);
-  progress.message(origin);
-  progress.message("writing " + dir.string() + "/{run.h5, run.xdmf, summary.json, checkpoint.h5} on " +
-                   std::to_string(threads) + " thread(s)");
+    fs::create_directories(dir);
+    const std::string run_path = join(dir, "run.h5"), checkpoint_path = join(dir, "checkpoint.h5");
+    RunFile file = restarting ? RunFile::reopen(run_path, clock.series_rows, clock.snapshots)
+                              : RunFile::create(run_path, {to_yaml_text(c), threads});
+    Progress progress(Progress::detect(o.quiet), c.run.strain, sim.state().strain);
+    progress.message(origin);
+    progress.message("writing " + dir.string() + "/{run.h5, run.xdmf, summary.json, checkpoint.h5} on " +
+                     std::to_string(threads) + " thread(s)");
 
-  auto save = [&] {
-    file.flush();
-    clock.series_rows = static_cast<std::int64_t>(file.series_rows());
-    clock.snapshots = static_cast<std::int64_t>(file.snapshot_count());
-    write_checkpoint(checkpoint_path, {sim.state_with_contacts(), clock, fingerprint, serialize(rng), threads});
-  };
-  auto finish_outputs = [&] {
-    file.flush();
-    write_text_atomically(join(dir, "run.xdmf"), xdmf_text("run.h5", file.snapshots()));
-  };
+    auto save = [&] {
+      file.flush();
+      clock.series_rows = static_cast<std::int64_t>(file.series_rows());
+      clock.snapshots = static_cast<std::int64_t>(file.snapshot_count());
+      write_checkpoint(checkpoint_path, {sim.state_with_contacts(), clock, fingerprint, serialize(rng), threads});
+    };
+    auto finish_outputs = [&] {
+      file.flush();
+      write_text_atomically(join(dir, "run.xdmf"), xdmf_text("run.h5", file.snapshots()));
+    };
 
-  auto wall0 = std::chrono::steady_clock::now();
-  install_stop_handlers();
-  double stress_sum = 0.0, rate_sum = 0.0;  // running eta_r = <Sigma_xy> / <gammadot>
-  try {
-    for (;;) {
-      sim.evaluate();
-      const double strain = sim.state().strain;
-      const double eps = 1e-9;
-      if (strain >= clock.next_series - eps) {
-        SeriesRow row;
-        row.step = sim.state().step;
-        row.time = sim.state().time;
-        row.strain = strain;
-        row.shear_rate = sim.shear_rate();
-        row.dt = sim.time_step();
-        row.contacts = static_cast<double>(sim.contact_count());
-        row.max_overlap = sim.max_overlap();
-        row.stress = sim.stress();
-        file.append(row);
-        clock.next_series = next_multiple(strain, every.series_every);
-        if (strain >= c.run.average_from) {
-          stress_sum += row.stress.total()(0, 1);
-          rate_sum += row.shear_rate;
+    auto wall0 = std::chrono::steady_clock::now();
+    install_stop_handlers();
+    double stress_sum = 0.0, rate_sum = 0.0;  // running eta_r = <Sigma_xy> / <gammadot>
+    try {
+      for (;;) {
+        sim.evaluate();
+        const double strain = sim.state().strain;
+        const double eps = 1e-9;
+        if (strain >= clock.next_series - eps) {
+          SeriesRow row;
+          row.step = sim.state().step;
+          row.time = sim.state().time;
+          row.strain = strain;
+          row.shear_rate = sim.shear_rate();
+          row.dt = sim.time_step();
+          row.contacts = static_cast<double>(sim.contact_count());
+          row.max_overlap = sim.max_overlap();
+          row.stress = sim.stress();
+          file.append(row);
+          clock.next_series = next_multiple(strain, every.series_every);
+          if (strain >= c.run.average_from) {
+            stress_sum += row.stress.total()(0, 1);
+            rate_sum += row.shear_rate;
+          }
+        }
+        if (strain >= clock.next_snapshot - eps) {
+          file.write_snapshot(snapshot_of(sim));
+          clock.next_snapshot = next_multiple(strain, every.snapshot_every);
+        }
+        progress.update(strain, sim.state().step,
+                        rate_sum != 0.0 ? stress_sum / rate_sum : sim.stress().total()(0, 1) / sim.shear_rate());
+        if (strain >= c.run.strain - eps) break;
+
+        sim.advance();
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+        if (const int sig = stop_signal.load()) {
+          save();
+          finish_outputs();
+          progress.finish();
+          std::cerr << "stopped by signal " << sig << " at strain " << sim.state().strain << "; continue with: suspend run "
+                    << c.source << " --restart " << checkpoint_path << "\n";
+          return 128 + sig;
+        }
+        if (sim.state().strain >= clock.next_checkpoint - eps || wall >= every.checkpoint_seconds) {
+          clock.next_checkpoint = next_multiple(sim.state().strain, every.checkpoint_every);
+          save();
+          wall0 = std::chrono::steady_clock::now();
         }
       }
-      if (strain >= clock.next_snapshot - eps) {
-        file.write_snapshot(snapshot_of(sim));
-        clock.next_snapshot = next_multiple(strain, every.snapshot_every);
-      }
-      progress.update(strain, sim.state().step,
-                      rate_sum != 0.0 ? stress_sum / rate_sum : sim.stress().total()(0, 1) / sim.shear_rate());
-      if (strain >= c.run.strain - eps) break;
-
-      sim.advance();
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-      if (const int sig = stop_signal.load()) {
-        save();
-        finish_outputs();
-        progress.finish();
-        std::cerr << "stopped by signal " << sig << " at strain " << sim.state().strain << "; continue with: suspend run "
-                  << c.source << " --restart " << checkpoint_path << "\n";
-        return 128 + sig;
-      }
-      if (sim.state().strain >= clock.next_checkpoint - eps || wall >= every.checkpoint_seconds) {
-        clock.next_checkpoint = next_multiple(sim.state().strain, every.checkpoint_every);
-        save();
-        wall0 = std::chrono::steady_clock::now();
-      }
+    } catch (const NumericalError& e) {
+      progress.finish();
+      file.write_snapshot(snapshot_of(sim));
+      save();
+      finish_outputs();
+      std::cerr << "error: " << e.what() << "\nthe last good state is in " << checkpoint_path << " and snapshot "
+                << file.snapshot_count() - 1 << " of " << run_path << "\n";
+      return exit_numerical_error;
     }
-  } catch (const NumericalError& e) {
     progress.finish();
-    file.write_snapshot(snapshot_of(sim));
     save();
     finish_outputs();
-    std::cerr << "error: " << e.what() << "\nthe last good state is in " << checkpoint_path << " and snapshot "
-              << file.snapshot_count() - 1 << " of " << run_path << "\n";
-    return exit_numerical_error;
+    const nlohmann::json summary =
+        summarize(file.id(), {sim.state().particles.volume() / sim.box().volume(), sim.state().particles.size(),
+                              c.run.average_from, c.simulation.control == FlowControl::stress,
+                              adhesion_force(c.simulation.contact)});
+    write_text_atomically(join(dir, "summary.json"), summary.dump(2) + "\n");
+    file.close();
+    const auto& eta = summary["eta_r"];
+    if (summary.contains("sigma_star"))
+      std::printf("sigma* = %.5g +- %.2g   G_adh = %.4g +- %.2g\n", summary["sigma_star"]["mean"].get<double>(),
+                  summary["sigma_star"]["sem"].get<double>(), summary["G_adh"]["mean"].get<double>(),
+                  summary["G_adh"]["sem"].get<double>());
+    std::printf("eta_r = %.5g +- %.2g   N1 = %.4g +- %.2g   N2 = %.4g +- %.2g   Pi = %.4g +- %.2g   (strain %.3g-%.3g, %zu samples)\n",
+                eta["mean"].get<double>(), eta["sem"].get<double>(), summary["N1"]["mean"].get<double>(),
+                summary["N1"]["sem"].get<double>(), summary["N2"]["mean"].get<double>(),
+                summary["N2"]["sem"].get<double>(), summary["Pi"]["mean"].get<double>(),
+                summary["Pi"]["sem"].get<double>(), c.run.average_from, sim.state().strain,
+                summary["samples"].get<std::size_t>());
+    return 0;
+  };
+  if (c.hydrodynamics == "fcm") {
+    FcmSimulation sim(std::move(state), box, c.simulation, c.fcm);
+    return run(sim);
   }
-  progress.finish();
-  save();
-  finish_outputs();
-  const nlohmann::json summary =
-      summarize(file.id(), {sim.state().particles.volume() / sim.box().volume(), sim.state().particles.size(),
-                            c.run.average_from, c.simulation.control == FlowControl::stress,
-                            adhesion_force(c.simulation.contact)});
-  write_text_atomically(join(dir, "summary.json"), summary.dump(2) + "\n");
-  file.close();
-  const auto& eta = summary["eta_r"];
-  if (summary.contains("sigma_star"))
-    std::printf("sigma* = %.5g +- %.2g   G_adh = %.4g +- %.2g\n", summary["sigma_star"]["mean"].get<double>(),
-                summary["sigma_star"]["sem"].get<double>(), summary["G_adh"]["mean"].get<double>(),
-                summary["G_adh"]["sem"].get<double>());
-  std::printf("eta_r = %.5g +- %.2g   N1 = %.4g +- %.2g   N2 = %.4g +- %.2g   Pi = %.4g +- %.2g   (strain %.3g-%.3g, %zu samples)\n",
-              eta["mean"].get<double>(), eta["sem"].get<double>(), summary["N1"]["mean"].get<double>(),
-              summary["N1"]["sem"].get<double>(), summary["N2"]["mean"].get<double>(),
-              summary["N2"]["sem"].get<double>(), summary["Pi"]["mean"].get<double>(),
-              summary["Pi"]["sem"].get<double>(), c.run.average_from, sim.state().strain,
-              summary["samples"].get<std::size_t>());
-  return 0;
+  PairwiseSimulation sim(std::move(state), box, c.simulation);
+  return run(sim);
 }
 
 }  // namespace suspend::io

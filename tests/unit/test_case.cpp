@@ -193,3 +193,29 @@ TEST(CaseContact, KeysOfAnotherLawAreUnknown) {
   EXPECT_NE(error_of(base, {"contact={law: linear_spring, friction: none, mu: 0.5}"}).find("contact.mu: must be 0"),
             std::string::npos);
 }
+
+TEST(Case, FlowControlWaveIntegratorAndModelKeys) {
+  const Case s = parse_case(YAML::Load(std::string(base) + "flow: {control: stress, shear_stress: 5}\n"), "");
+  EXPECT_EQ(s.simulation.control, FlowControl::stress);
+  EXPECT_DOUBLE_EQ(s.simulation.shear_stress, 5.0);
+  const Case w = parse_case(YAML::Load(std::string(base) + "flow: {type: wavy, amplitude: 20}\n"), "");
+  EXPECT_DOUBLE_EQ(w.simulation.wave_amplitude, 20.0);
+  EXPECT_EQ(w.simulation.wave_periods, 1);
+  const Case f = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm, fcm: {grid_spacing: 0.4}}\n"), "");
+  EXPECT_EQ(f.hydrodynamics, "fcm");
+  EXPECT_DOUBLE_EQ(f.fcm.grid_spacing, 0.4);
+  // The resolved case reads back to itself.
+  EXPECT_EQ(to_yaml_text(parse_case(to_yaml(w), "")), to_yaml_text(w));
+  EXPECT_NE(error_of(std::string(base) + "flow: {control: stress}\n").find("flow.shear_stress: missing"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::string(base) + "flow: {shear_stress: 2}\n").find("flow.shear_stress"), std::string::npos);
+  EXPECT_NE(error_of(std::string(base) + "flow: {type: wavy}\n").find("flow.amplitude"), std::string::npos);
+  EXPECT_NE(error_of(base, {"run.integrator=inertial", "run.stokes_number=-1"})
+                .find("run.stokes_number"), std::string::npos);
+  EXPECT_NE(error_of(base, {"run.stokes_number=0.1"}).find("run.stokes_number"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::string(base) + "hydrodynamics: {model: fcm}\nflow: {control: stress, shear_stress: 1}\n")
+                .find("flow.control"), std::string::npos);
+  EXPECT_NE(error_of(std::string(base) + "hydrodynamics: {model: fcm, fcm: {grid_spacng: 1}}\n")
+                .find("hydrodynamics.fcm.grid_spacng"), std::string::npos);
+}

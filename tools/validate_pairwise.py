@@ -1,0 +1,70 @@
+#!/usr/bin/env python3
+"""Compare pairwise-engine runs with the published fits (stdlib only).
+
+usage: validate_pairwise.py frictionless DIR_phi1 DIR_phi2 ... [--tolerance 0.2]
+       validate_pairwise.py frictional   DIR_phi1 ...          [--tolerance 0.25]
+       validate_pairwise.py thickening   DIR_low_rate DIR_high_rate [--factor 3]
+Each DIR holds a summary.json. Prints one line per run and exits 1 if a criterion fails.
+"""
+import json
+import sys
+
+FITS = {  # Mari et al. 2014, via paper 000 Fig. 7
+    "frictionless": lambda phi: 1.4 * (1 - phi / 0.66) ** -1.6,
+    "frictional": lambda phi: 0.71 * (1 - phi / 0.575) ** -2.3,
+}
+
+
+def load(d):
+    with open(d + "/summary.json") as f:
+        return json.load(f)
+
+
+def main(argv):
+    kind, rest = argv[1], argv[2:]
+    opts = {"--tolerance": None, "--factor": "3"}
+    dirs = []
+    i = 0
+    while i < len(rest):
+        if rest[i] in opts:
+            opts[rest[i]] = rest[i + 1]
+            i += 2
+        else:
+            dirs.append(rest[i])
+            i += 1
+    ok = True
+    if kind in FITS:
+        tol = float(opts["--tolerance"] or (0.2 if kind == "frictionless" else 0.25))
+        rows = []
+        for d in dirs:
+            s = load(d)
+            phi, eta, sem = s["phi"], s["eta_r"]["mean"], s["eta_r"]["sem"]
+            fit = FITS[kind](phi)
+            dev = eta / fit - 1
+            good = abs(dev) <= tol
+            ok &= good
+            rows.append((phi, eta, s["Pi"]["mean"]))
+            print(f"{kind:12s} phi {phi:.4f}  eta_r {eta:9.4g} +- {sem:.2g}  fit {fit:9.4g}  "
+                  f"deviation {100 * dev:+6.1f}% (allowed {100 * tol:.0f}%)  Pi {s['Pi']['mean']:.4g} +- {s['Pi']['sem']:.2g}"
+                  f"  {'ok' if good else 'FAIL'}")
+        if kind == "frictionless" and len(rows) >= 2:
+            rows.sort()
+            (p0, e0, pi0), (p1, e1, pi1) = rows[0], rows[-1]
+            good = pi0 > 0 and pi1 / pi0 > e1 / e0
+            ok &= good
+            print(f"Pi rises faster than eta_r from phi {p0:.3f} to {p1:.3f}: Pi x{pi1 / pi0:.3g}, eta_r x{e1 / e0:.3g}"
+                  f"  {'ok' if good else 'FAIL'}")
+    elif kind == "thickening":
+        low, high = load(dirs[0]), load(dirs[1])
+        ratio = high["eta_r"]["mean"] / low["eta_r"]["mean"]
+        good = ratio >= float(opts["--factor"])
+        ok &= good
+        print(f"thickening: eta_r {low['eta_r']['mean']:.4g} (low rate) -> {high['eta_r']['mean']:.4g} (high rate), "
+              f"x{ratio:.3g} (required x{opts['--factor']})  {'ok' if good else 'FAIL'}")
+    else:
+        sys.exit(__doc__)
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
