@@ -154,6 +154,13 @@ void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species
     throw NumericalError(s.str());
   }
 
+  report_solution(p, species, pairs, flow, out);
+}
+
+void ResistanceSolver::report_solution(const Particles& p, const std::vector<int>& species,
+                                       const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
+                                       SolveResult& out) {
+  const std::size_t n = p.size();
   out.velocity.resize(n);
   out.angular_velocity.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -178,15 +185,7 @@ void ResistanceSolver::explicit_forces(const Particles& p, const std::vector<int
   previous_ = dv;
   out.iterations = 0;
   out.residual = 0.0;
-  out.velocity.resize(n);
-  out.angular_velocity.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto d = dv.segment<6>(6 * static_cast<Eigen::Index>(i));
-    out.velocity[i] = flow.velocity(p.position[i]) + d.head<3>();
-    out.angular_velocity[i] = flow.angular_velocity(p.position[i]) + d.tail<3>();
-  }
-  out.lubricated_pairs = lubricated_;
-  accumulate_stress(p, species, pairs, flow, out);
+  report_solution(p, species, pairs, flow, out);
 }
 
 double ResistanceSolver::relaxation_rate(const std::vector<double>& mass, const std::vector<double>& moment) const {

@@ -145,6 +145,9 @@ class ResistanceSolver {
   const hydro::PairLubrication& law(int si, int sj) const { return laws_[si * species_radius_.size() + sj]; }
   void assemble(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
                 const hydro::WavyShear& flow, const std::vector<Vec3>& force, const std::vector<Vec3>& torque);
+  // Lab-frame velocities of the disturbance in previous_, and the stress sums, into out.
+  void report_solution(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
+                       const hydro::WavyShear& flow, SolveResult& out);
   void accumulate_stress(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
                          const hydro::WavyShear& flow, SolveResult& out);
 

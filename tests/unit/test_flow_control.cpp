@@ -6,18 +6,13 @@
 
 #include "core/error.hpp"
 #include "dem/simulation.hpp"
+#include "tests/simulation_state.hpp"
 
 using namespace suspend;
+using suspend::test_support::state_of;
 using std::numbers::pi;
 
 namespace {
-SimulationState state_of(const std::vector<Vec3>& positions, const std::vector<double>& radii) {
-  SimulationState s;
-  s.particles.resize(positions.size());
-  s.particles.position = positions;
-  s.particles.radius = radii;
-  return s;
-}
 
 // A small dense cluster: a lubricated pair (gap 0.01), an overlapping pair and a pair across the sheared y face.
 SimulationState cluster() {

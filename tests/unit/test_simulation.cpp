@@ -6,19 +6,11 @@
 
 #include "core/error.hpp"
 #include "dem/simulation.hpp"
+#include "tests/simulation_state.hpp"
 
 using namespace suspend;
+using suspend::test_support::state_of;
 using std::numbers::pi;
-
-namespace {
-SimulationState state_of(const std::vector<Vec3>& positions, const std::vector<double>& radii) {
-  SimulationState s;
-  s.particles.resize(positions.size());
-  s.particles.position = positions;
-  s.particles.radius = radii;
-  return s;
-}
-}  // namespace
 
 TEST(Simulation, DiluteSuspensionHasTheEinsteinViscosity) {
   // Far-apart spheres: each adds its Stokes stresslet (20/3) pi a^3 E, so eta_r = 1 + (5/2) phi exactly.
