@@ -62,7 +62,15 @@ void Solver::place(std::span<const Vec3> positions, std::span<const double> radi
   if (radii.size() != positions.size()) throw InputError("fcm: one radius per particle is required");
   if (!std::isfinite(shear_offset)) throw InputError("fcm: shear offset must be finite");
   // Only the wrapped offset matters: D and D + L_x describe the same lattice.
-  grid_.shear_fraction = wrap_centered(shear_offset, grid_.length.x()) / grid_.length.y();
+  const double shear_fraction = wrap_centered(shear_offset, grid_.length.x()) / grid_.length.y();
+  // The same configuration as last time (bitwise): the plan is still valid.
+  if (plan_current_ && shear_fraction == grid_.shear_fraction && positions.size() == placed_positions_.size() &&
+      std::equal(positions.begin(), positions.end(), placed_positions_.begin(),
+                 [](const Vec3& a, const Vec3& b) { return a.x() == b.x() && a.y() == b.y() && a.z() == b.z(); }) &&
+      std::equal(radii.begin(), radii.end(), placed_radii_.begin()))
+    return;
+  plan_current_ = false;
+  grid_.shear_fraction = shear_fraction;
   envelopes_.resize(positions.size());
   const double min_length = grid_.length.minCoeff();
   for (std::size_t i = 0; i < positions.size(); ++i) {
@@ -77,6 +85,10 @@ void Solver::place(std::span<const Vec3> positions, std::span<const double> radi
   const double t0 = omp_get_wtime();
   plan_support(grid_, envelopes_, grid_order(grid_, envelopes_), plan_);
   timings_.plan += omp_get_wtime() - t0;
+  ++timings_.plans;
+  placed_positions_.assign(positions.begin(), positions.end());
+  placed_radii_.assign(radii.begin(), radii.end());
+  plan_current_ = true;
 }
 
 void Solver::stokes_solve(std::span<const Vec3> forces, std::span<const Mat3> dipoles, std::span<Vec3> velocities,

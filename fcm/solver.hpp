@@ -68,10 +68,12 @@ struct MobilityResult {
 };
 
 // Wall-clock seconds spent in each stage since construction or reset_timings(). `plan` (tabulating the envelope
-// footprints, support_plan.hpp) is paid once per configuration, the others once per Stokes solve (`solves`).
+// footprints, support_plan.hpp) is paid once per configuration (`plans`), the others once per Stokes solve
+// (`solves`).
 struct SolveTimings {
   double plan = 0.0, spread = 0.0, fft = 0.0, green = 0.0, interpolate = 0.0;
   int solves = 0;
+  int plans = 0;
   double precondition = 0.0;  // building the near-field preconditioner (once per configuration) and applying it
 };
 
@@ -83,6 +85,8 @@ class Solver {
   MobilityResult solve(const MobilityProblem& problem);
 
   // One Stokes solve without ambient flow or rigidity (any of the spans may be empty).
+  // solve() and apply() keep the footprint plan of the last configuration: a call with bitwise the same positions,
+  // radii and wrapped Lees-Edwards offset reuses it (e.g. the Stokes solves of one coupled time step).
   Disturbance apply(std::span<const Vec3> positions, std::span<const double> radii, std::span<const Vec3> forces,
                     std::span<const Vec3> torques, std::span<const Mat3> stresslets, double shear_offset);
 
@@ -96,6 +100,7 @@ class Solver {
   void reset_timings() { timings_ = {}; }
 
  private:
+  // Envelopes and footprint plan of the configuration; a no-op if it equals the one last placed.
   void place(std::span<const Vec3> positions, std::span<const double> radii, double shear_offset);
   // Whether the near-field factor was built for a configuration within near_field_reuse_displacement of pb's.
   bool near_field_is_current(const MobilityProblem& pb) const;
@@ -108,6 +113,9 @@ class Solver {
   std::unique_ptr<VectorFft> fft_;
   std::vector<Envelope> envelopes_;
   SupportPlan plan_;  // envelope footprints of the current configuration, in spatially sorted order
+  bool plan_current_ = false;         // plan_ holds placed_positions_, placed_radii_ at grid_.shear_fraction
+  std::vector<Vec3> placed_positions_;
+  std::vector<double> placed_radii_;
   NearFieldPreconditioner near_field_;
   std::vector<Vec3> near_field_positions_;  // configuration the near-field factor was built for
   std::vector<double> near_field_radii_;
