@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -13,9 +14,10 @@
 
 namespace suspend::fcm {
 
-Envelope make_envelope(const Vec3& centre, double radius, double truncation_widths) {
-  const double sm = monopole_width(radius);
-  return {centre, sm, dipole_width(radius), truncation_widths * sm};
+Envelope make_envelope(const Vec3& centre, double radius, double truncation_widths, double split) {
+  const double sm = monopole_width(radius), sd = dipole_width(radius);
+  const double tm = std::sqrt(sm * sm - split * split), td = std::sqrt(sd * sd - split * split);
+  return {centre, tm, td, truncation_widths * tm};
 }
 
 Mat3 dipole_tensor(const Vec3& torque, const Mat3& stresslet) {

@@ -20,13 +20,17 @@
 
 namespace suspend::fcm {
 
+// The Gaussians put on the grid. Without spectral splitting they are the FCM envelopes (envelope.hpp); with a
+// split width c (solver.hpp) they are the narrower tau = sqrt(sigma^2 - c^2) and the Green's function supplies the
+// rest (Delta_sigma = Delta_tau * Delta_c).
 struct Envelope {
   Vec3 centre = Vec3::Zero();
-  double sigma_m = 0.0;  // monopole width
-  double sigma_d = 0.0;  // dipole width
+  double sigma_m = 0.0;  // monopole width on the grid (tau_M)
+  double sigma_d = 0.0;  // dipole width on the grid (tau_D)
   double support = 0.0;  // truncation radius
 };
-Envelope make_envelope(const Vec3& centre, double radius, double truncation_widths);
+// Truncated at truncation_widths x the (narrow) monopole width; split < dipole_width(radius).
+Envelope make_envelope(const Vec3& centre, double radius, double truncation_widths, double split = 0.0);
 
 // The dipole tensor G from a torque and a (symmetric) stresslet, and the angular velocity and rate of strain
 // from an interpolated gradient moment A.

@@ -1,11 +1,17 @@
 #include "fcm/stokes_operator.hpp"
 
+#include <cmath>
 #include <complex>
 #include <numbers>
 
 namespace suspend::fcm {
+namespace {
 
-void apply_stokes_green(const ShearedGrid& grid, VectorFft& fft, double scale) {
+// Signed mode number of index i of an n-point transform.
+int mode(int i, int n) { return i <= n / 2 ? i : i - n; }
+
+template <bool Windowed>
+void green(const ShearedGrid& grid, VectorFft& fft, double scale, const double* wxy, const double* wz) {
   const int nx = grid.n[0], ny = grid.n[1], nz = grid.n[2];
   const int hx = nx / 2 + 1;
   const double twopi = 2.0 * std::numbers::pi;
@@ -16,13 +22,15 @@ void apply_stokes_green(const ShearedGrid& grid, VectorFft& fft, double scale) {
   std::complex<double>* f3 = fft.spectrum(2).data();
 #pragma omp parallel for schedule(static)
   for (int iz = 0; iz < nz; ++iz) {
-    const int m3 = iz <= nz / 2 ? iz : iz - nz;
+    const int m3 = mode(iz, nz);
     const bool nyq3 = nz % 2 == 0 && iz == nz / 2;
     const double k3 = c3 * m3;
+    const double sz = Windowed ? scale * wz[iz] : scale;
     for (int iy = 0; iy < ny; ++iy) {
-      const int m2 = iy <= ny / 2 ? iy : iy - ny;
+      const int m2 = mode(iy, ny);
       const bool nyq2 = ny % 2 == 0 && iy == ny / 2;
       const std::size_t row = (static_cast<std::size_t>(iz) * ny + iy) * hx;
+      const double* w = Windowed ? wxy + static_cast<std::size_t>(iy) * hx : nullptr;
       // Zeroed: Nyquist planes, the Nyquist x mode and k = 0; the loop below sees only k^2 > 0.
       const int m_end = nx % 2 == 0 ? nx / 2 : hx;
       const int m_begin = nyq2 || nyq3 ? m_end : (m2 == 0 && m3 == 0 ? 1 : 0);
@@ -34,13 +42,53 @@ void apply_stokes_green(const ShearedGrid& grid, VectorFft& fft, double scale) {
         const double k1 = c1 * m1, k2s = k2 - gt * k1;
         const double inv = 1.0 / (k1 * k1 + k2s * k2s + k3 * k3);
         const std::complex<double> kf = (k1 * f1[i] + k2s * f2[i] + k3 * f3[i]) * inv;
-        const double g = scale * inv;
+        double g = sz * inv;
+        if constexpr (Windowed) g *= w[m1];
         f1[i] = g * (f1[i] - k1 * kf);
         f2[i] = g * (f2[i] - k2s * kf);
         f3[i] = g * (f3[i] - k3 * kf);
       }
     }
   }
+}
+
+}  // namespace
+
+void SplitWindow::update(const ShearedGrid& grid, double c) {
+  if (c == split && grid.shear_fraction == shear_fraction_ && grid.n == n_ && grid.length == length_ &&
+      (c == 0.0 || !xy.empty()))
+    return;
+  split = c;
+  shear_fraction_ = grid.shear_fraction;
+  n_ = grid.n;
+  length_ = grid.length;
+  if (c == 0.0) {
+    xy.clear();
+    z.clear();
+    return;
+  }
+  const int nx = grid.n[0], ny = grid.n[1], nz = grid.n[2], hx = nx / 2 + 1;
+  const double twopi = 2.0 * std::numbers::pi;
+  const double c1 = twopi / grid.length.x(), c2 = twopi / grid.length.y(), c3 = twopi / grid.length.z();
+  const double gt = grid.shear_fraction, c2s = c * c;
+  xy.resize(static_cast<std::size_t>(ny) * hx);
+  z.resize(static_cast<std::size_t>(nz));
+  for (int iy = 0; iy < ny; ++iy)
+    for (int m1 = 0; m1 < hx; ++m1) {
+      const double k1 = c1 * m1, k2s = c2 * mode(iy, ny) - gt * k1;
+      xy[static_cast<std::size_t>(iy) * hx + m1] = std::exp(-c2s * (k1 * k1 + k2s * k2s));
+    }
+  for (int iz = 0; iz < nz; ++iz) {
+    const double k3 = c3 * mode(iz, nz);
+    z[static_cast<std::size_t>(iz)] = std::exp(-c2s * k3 * k3);
+  }
+}
+
+void apply_stokes_green(const ShearedGrid& grid, VectorFft& fft, double scale, const SplitWindow* window) {
+  if (window != nullptr && window->split != 0.0)
+    green<true>(grid, fft, scale, window->xy.data(), window->z.data());
+  else
+    green<false>(grid, fft, scale, nullptr, nullptr);
 }
 
 }  // namespace suspend::fcm
