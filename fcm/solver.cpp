@@ -106,9 +106,7 @@ void Solver::stokes_solve(std::span<const Vec3> forces, std::span<const Mat3> di
   const std::size_t stride = fft_->real_size();
   double* field = fft_->real_data();
   const double t0 = omp_get_wtime();
-  const std::ptrdiff_t size = static_cast<std::ptrdiff_t>(3 * stride);
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t i = 0; i < size; ++i) field[i] = 0.0;
+  fft_->zero_real();
   spread(plan_, forces, dipoles, field, stride);
   const double t1 = omp_get_wtime();
   timings_.spread += t1 - t0;

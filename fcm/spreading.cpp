@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -9,6 +10,10 @@
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 #include "fcm/envelope.hpp"
 
@@ -64,12 +69,19 @@ constexpr int kMaxFixed = 16;
 // On x86-64 with GCC the per-particle loops are also compiled for AVX2 + FMA and chosen at load time (ifunc), so
 // the portable baseline binary still uses the 4-wide units where the CPU has them. Not under the thread or address
 // sanitizer: their instrumentation of the ifunc resolver runs before the sanitizer runtime is up.
+// Where the CPU also has AVX-512, 8-lane kernels with masked loads and stores (below) replace them: a row of up to
+// 8 nodes is one masked vector, with no per-length instances and no tail handling.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && \
     !defined(__SANITIZE_THREAD__) && !defined(__SANITIZE_ADDRESS__)
 #define SUSPEND_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#define SUSPEND_WIDE_KERNELS 1
+#define SUSPEND_AVX512 __attribute__((target("avx512f,avx512vl,avx512dq,avx2,fma")))
 #else
 #define SUSPEND_SIMD_CLONES
+#define SUSPEND_WIDE_KERNELS 0
 #endif
+
+std::atomic<bool> wide_kernels_on{true};
 
 typedef double Lanes __attribute__((vector_size(32)));
 
@@ -315,6 +327,107 @@ SUSPEND_SIMD_CLONES void interpolate_particle(const SupportRow* rows, const Supp
   }
 }
 
+#if SUSPEND_WIDE_KERNELS
+// 8-lane (AVX-512) kernels: the same arithmetic as spread_particle / interpolate_particle, a row in masked vectors of
+// 8 nodes (masked-off lanes are neither read from memory nor written), so rows of 1-8 nodes take one pass.
+[[gnu::always_inline]] SUSPEND_AVX512 inline __mmask8 row_mask(int left) {
+  return left >= 8 ? static_cast<__mmask8>(0xFF) : static_cast<__mmask8>((1u << left) - 1u);
+}
+
+template <bool Monopole>
+SUSPEND_AVX512 void spread_particle_wide(const SupportRow* rows, const SupportRow* rows_end, const double* tables,
+                                         const Vec3& f, const Mat3& gs, std::uint32_t zb, std::uint32_t ze,
+                                         double* fx, double* fy, double* fz) {
+  __m512d fm[3], g0[3], g1[3], g2[3];
+  for (int i = 0; i < 3; ++i) {
+    fm[i] = _mm512_set1_pd(f[i]);
+    g0[i] = _mm512_set1_pd(gs(i, 0));
+    g1[i] = _mm512_set1_pd(gs(i, 1));
+    g2[i] = _mm512_set1_pd(gs(i, 2));
+  }
+  double* const field[3] = {fx, fy, fz};
+  for (const SupportRow* r = rows; r != rows_end; ++r) {
+    if (r->iz < zb || r->iz >= ze) continue;
+    // f_c += F_c (yz_m m) + (gs_c1 ydy + gs_c2 ydz) d + gs_c0 (yz_d dd)   (RowCoefficients, as vectors)
+    const __m512d ym = _mm512_set1_pd(r->yz_m), yd = _mm512_set1_pd(r->yz_d);
+    const __m512d wy = _mm512_set1_pd(r->ydy), wz = _mm512_set1_pd(r->ydz);
+    __m512d b[3];
+    for (int c = 0; c < 3; ++c) b[c] = _mm512_fmadd_pd(g1[c], wy, _mm512_mul_pd(g2[c], wz));
+    const double* m = tables + r->table;
+    const double* d = m + r->width;
+    const double* dd = d + r->width;
+    const int n = r->count;
+    for (int i = 0; i < n; i += 8) {
+      const __mmask8 k = row_mask(n - i);
+      const __m512d vd = _mm512_maskz_loadu_pd(k, d + i);
+      const __m512d vdd = _mm512_mul_pd(yd, _mm512_maskz_loadu_pd(k, dd + i));
+      __m512d vm = _mm512_setzero_pd();
+      if constexpr (Monopole) vm = _mm512_mul_pd(ym, _mm512_maskz_loadu_pd(k, m + i));
+      for (int c = 0; c < 3; ++c) {
+        double* q = field[c] + r->first + i;
+        __m512d v = _mm512_maskz_loadu_pd(k, q);
+        v = _mm512_fmadd_pd(b[c], vd, v);
+        v = _mm512_fmadd_pd(g0[c], vdd, v);
+        if constexpr (Monopole) v = _mm512_fmadd_pd(fm[c], vm, v);
+        _mm512_mask_storeu_pd(q, k, v);
+      }
+    }
+  }
+}
+
+// (Not _mm512_reduce_add_pd: with GCC 12 its _mm256_undefined_pd trips -Wuninitialized.)
+[[gnu::always_inline]] SUSPEND_AVX512 inline double lane_sum_wide(__m512d v) {
+  alignas(64) double x[8];
+  _mm512_store_pd(x, v);
+  return ((x[0] + x[4]) + (x[1] + x[5])) + ((x[2] + x[6]) + (x[3] + x[7]));
+}
+
+SUSPEND_AVX512 void interpolate_particle_wide(const SupportRow* rows, const SupportRow* rows_end,
+                                              const double* tables, const double* ux, const double* uy,
+                                              const double* uz, Vec3& u, Mat3& a) {
+  __m512d su[3], s0[3], s1[3], s2[3];
+  for (int c = 0; c < 3; ++c) su[c] = s0[c] = s1[c] = s2[c] = _mm512_setzero_pd();
+  const double* const field[3] = {ux, uy, uz};
+  for (const SupportRow* r = rows; r != rows_end; ++r) {
+    const __m512d wm = _mm512_set1_pd(r->yz_m), wd = _mm512_set1_pd(r->yz_d);
+    const __m512d wy = _mm512_set1_pd(r->ydy), wz = _mm512_set1_pd(r->ydz);
+    const double* m = tables + r->table;
+    const double* d = m + r->width;
+    const double* dd = d + r->width;
+    const int n = r->count;
+    for (int i = 0; i < n; i += 8) {
+      const __mmask8 k = row_mask(n - i);
+      // Node weights of the four moments: w_M m, w_D dd (x), w_D dy d, w_D dz d (support_plan.hpp).
+      const __m512d vd = _mm512_maskz_loadu_pd(k, d + i);
+      const __m512d wmm = _mm512_mul_pd(wm, _mm512_maskz_loadu_pd(k, m + i));
+      const __m512d wdd = _mm512_mul_pd(wd, _mm512_maskz_loadu_pd(k, dd + i));
+      const __m512d wyd = _mm512_mul_pd(wy, vd), wzd = _mm512_mul_pd(wz, vd);
+      for (int c = 0; c < 3; ++c) {
+        const __m512d v = _mm512_maskz_loadu_pd(k, field[c] + r->first + i);
+        su[c] = _mm512_fmadd_pd(v, wmm, su[c]);
+        s0[c] = _mm512_fmadd_pd(v, wdd, s0[c]);
+        s1[c] = _mm512_fmadd_pd(v, wyd, s1[c]);
+        s2[c] = _mm512_fmadd_pd(v, wzd, s2[c]);
+      }
+    }
+  }
+  for (int c = 0; c < 3; ++c) {
+    u[c] = lane_sum_wide(su[c]);
+    a(c, 0) = lane_sum_wide(s0[c]);
+    a(c, 1) = lane_sum_wide(s1[c]);
+    a(c, 2) = lane_sum_wide(s2[c]);
+  }
+}
+
+bool cpu_has_avx512() {
+  static const bool ok = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+                         __builtin_cpu_supports("avx512dq");
+  return ok;
+}
+#endif
+
+bool wide() { return wide_kernels_on.load(std::memory_order_relaxed) && wide_kernels_available(); }
+
 }  // namespace
 
 void spread(const SupportPlan& plan, std::span<const Vec3> forces, std::span<const Mat3> dipoles, double* field,
@@ -327,6 +440,7 @@ void spread(const SupportPlan& plan, std::span<const Vec3> forces, std::span<con
   double* fz = field + 2 * stride;
   const double* tables = plan.tables.data();
   const SupportRow* rows = plan.rows.data();
+  [[maybe_unused]] const bool use_wide = wide();
 #pragma omp parallel
   {
     // Thread t owns z planes [z_begin, z_end): writes never collide.
@@ -341,6 +455,15 @@ void spread(const SupportPlan& plan, std::span<const Vec3> forces, std::span<con
       const Mat3 gs = has_g ? Mat3(dipoles[p] * plan.dipole_scale[k]) : Mat3::Zero();
       const SupportRow* begin = rows + plan.row_begin[k];
       const SupportRow* end = rows + plan.row_end[k];
+#if SUSPEND_WIDE_KERNELS
+      if (use_wide) {
+        if (has_f)
+          spread_particle_wide<true>(begin, end, tables, f, gs, zb, ze, fx, fy, fz);
+        else
+          spread_particle_wide<false>(begin, end, tables, f, gs, zb, ze, fx, fy, fz);
+        continue;
+      }
+#endif
       if (has_f)
         spread_particle<true>(begin, end, tables, f, gs, zb, ze, fx, fy, fz);
       else
@@ -356,19 +479,36 @@ void interpolate(const SupportPlan& plan, const double* field, std::size_t strid
   const double dv = plan.cell_volume;
   const double* tables = plan.tables.data();
   const SupportRow* rows = plan.rows.data();
+  [[maybe_unused]] const bool use_wide = wide();
 #pragma omp parallel for schedule(dynamic, 16)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     const std::size_t ku = static_cast<std::size_t>(k);
     Vec3 u;
     Mat3 a;
-    interpolate_particle(rows + plan.row_begin[ku], rows + plan.row_end[ku], tables, field, field + stride,
-                         field + 2 * stride, u, a);
+#if SUSPEND_WIDE_KERNELS
+    if (use_wide)
+      interpolate_particle_wide(rows + plan.row_begin[ku], rows + plan.row_end[ku], tables, field, field + stride,
+                                field + 2 * stride, u, a);
+    else
+#endif
+      interpolate_particle(rows + plan.row_begin[ku], rows + plan.row_end[ku], tables, field, field + stride,
+                           field + 2 * stride, u, a);
     // A_ij = sum u_i d_j Delta_D dV with d_j Delta_D = -d_j / sigma_D^2 Delta_D.
     const std::size_t p = plan.particle[ku];
     if (want_u) velocities[p] = u * dv;
     if (want_a) gradient_moments[p] = a * (dv * plan.dipole_scale[ku]);
   }
 }
+
+bool wide_kernels_available() {
+#if SUSPEND_WIDE_KERNELS
+  return cpu_has_avx512();
+#else
+  return false;
+#endif
+}
+
+void use_wide_kernels(bool on) { wide_kernels_on.store(on, std::memory_order_relaxed); }
 
 void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::span<const Vec3> forces,
             std::span<const Mat3> dipoles, double* field, std::size_t stride) {

@@ -49,6 +49,12 @@ void spread(const SupportPlan& plan, std::span<const Vec3> forces, std::span<con
 void interpolate(const SupportPlan& plan, const double* field, std::size_t stride, std::span<Vec3> velocities,
                  std::span<Mat3> gradient_moments);
 
+// Row kernels: 8-lane AVX-512 ones where the CPU has them (x86-64 with GCC), else 4-lane AVX2 or the portable
+// baseline (chosen at load time). The results agree to round-off. For tests and benchmarks: whether the 8-lane
+// kernels exist on this CPU, and a process-wide switch (default on; off selects the 4-lane kernels).
+bool wide_kernels_available();
+void use_wide_kernels(bool on);
+
 // The same for a one-off configuration: plans the supports (support_plan.hpp), then spreads / interpolates.
 void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::span<const Vec3> forces,
             std::span<const Mat3> dipoles, double* field, std::size_t stride);
