@@ -6,7 +6,7 @@
 // (3 forward + 3 inverse r2c transforms of the same grid, FFTW measure plans), measured in the same run.
 // Usage: bench_coupling [steps=10] [warmup=5] [cache_dir=coupling_cache] [krylov_tolerance=1e-4]
 //                       [near_field=cg|cholesky] [preconditioner_cutoff=2.2] [inner_max_iterations=50]
-//                       [inner_tolerance=1e-2]
+//                       [inner_tolerance=1e-2] [min_gap=0.01 (of the initial packing, a)]
 // Deterministic instruction counts of the timed steps only (the bare FFTs and the warm-up are not collected):
 //   OMP_NUM_THREADS=1 valgrind --tool=callgrind --collect-atstart=no build/bin/bench_coupling 4 5 coupling_cache
 //   callgrind_annotate --inclusive=yes callgrind.out.<pid>
@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
   const Box box(16, 16, 16);
   PackingParams pp;
   pp.seed = 3;
-  pp.min_gap = 0.01;
+  pp.min_gap = argc > 9 ? std::atof(argv[9]) : 0.01;
   const Packing packing = random_packing(radius, box, pp);
   SimulationState state;
   state.particles.resize(radius.size());
@@ -117,6 +117,7 @@ int main(int argc, char** argv) {
   row("total step", total);
   row("contacts", contact);
   row("sub-grid (assembly+apply)", subgrid);
+  row("  of which assembly", (sim.subgrid_assembly_seconds() - assembly0) / steps);
   row("near-field preconditioner", precond);
   row("FCM Stokes solves", stokes);
   row("  of which plan (footprints)", ft.plan / steps);

@@ -8,15 +8,22 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-// Force of strain E through G^{ba}_{jki} E_jk: X (d.E.d) d + 2 Y (E d - (d.E.d) d).
-Vec3 strain_force(double scale, const Vec3& d, double x, double y, const Mat3& e) {
-  const Vec3 ed = e * d;
-  const double ded = d.dot(ed);
-  return scale * (x * ded * d + 2.0 * y * (ed - ded * d));
+// The strain E seen along d = n: E n and n.E.n (along -n: -E n and the same n.E.n).
+struct StrainAlong {
+  Vec3 en;
+  double ded;
+  Vec3 cross;  // n x (E n)
+  StrainAlong(const Vec3& n, const Mat3& e) : en(e * n), ded(n.dot(en)), cross(n.cross(en)) {}
+};
+
+// Force of strain E through G^{ba}_{jki} E_jk along d = n: X (d.E.d) d + 2 Y (E d - (d.E.d) d); along -n it
+// changes sign (both terms are odd in d).
+Vec3 strain_force(double scale, const Vec3& n, double x, double y, const StrainAlong& e) {
+  return scale * (x * e.ded * n + 2.0 * y * (e.en - e.ded * n));
 }
 
-// Torque of strain E through H^{ba}_{jki} E_jk: 2 Y d x (E d).
-Vec3 strain_torque(double scale, const Vec3& d, double y, const Mat3& e) { return scale * 2.0 * y * d.cross(e * d); }
+// Torque of strain E through H^{ba}_{jki} E_jk: 2 Y d x (E d), even in d.
+Vec3 strain_torque(double scale, double y, const StrainAlong& e) { return scale * 2.0 * y * e.cross; }
 
 }  // namespace
 
@@ -53,13 +60,36 @@ Matrix12 pair_resistance(double a_i, double a_j, const Vec3& n, const Resistance
 Vector12 pair_strain_forces(double a_i, double a_j, const Vec3& n, const ResistanceScalars& si,
                             const ResistanceScalars& sj, const Mat3& e_i, const Mat3& e_j) {
   Vector12 f;
-  const Vec3 m = -n;
+  // Seen from j, d = -n: the forces flip sign, the torques do not.
+  const StrainAlong ei(n, e_i), ej(n, e_j);
   const double fg_i = 4.0 * pi * a_i * a_i, fg_j = 4.0 * pi * a_j * a_j;
   const double fh_i = 8.0 * pi * a_i * a_i * a_i, fh_j = 8.0 * pi * a_j * a_j * a_j;
-  f.segment<3>(0) = strain_force(fg_i, n, si.x11g, si.y11g, e_i) + strain_force(fg_j, m, sj.x12g, sj.y12g, e_j);
-  f.segment<3>(6) = strain_force(fg_j, m, sj.x11g, sj.y11g, e_j) + strain_force(fg_i, n, si.x12g, si.y12g, e_i);
-  f.segment<3>(3) = strain_torque(fh_i, n, si.y11h, e_i) + strain_torque(fh_j, m, sj.y12h, e_j);
-  f.segment<3>(9) = strain_torque(fh_j, m, sj.y11h, e_j) + strain_torque(fh_i, n, si.y12h, e_i);
+  f.segment<3>(0) = strain_force(fg_i, n, si.x11g, si.y11g, ei) - strain_force(fg_j, n, sj.x12g, sj.y12g, ej);
+  f.segment<3>(6) = strain_force(fg_i, n, si.x12g, si.y12g, ei) - strain_force(fg_j, n, sj.x11g, sj.y11g, ej);
+  f.segment<3>(3) = strain_torque(fh_i, si.y11h, ei) + strain_torque(fh_j, sj.y12h, ej);
+  f.segment<3>(9) = strain_torque(fh_j, sj.y11h, ej) + strain_torque(fh_i, si.y12h, ei);
+  return f;
+}
+
+Vector12 pair_resistance_product(double a_i, double a_j, const Vec3& n, const ResistanceScalars& si,
+                                 const ResistanceScalars& sj, const Vector12& v) {
+  const Vec3 ui = v.segment<3>(0), wi = v.segment<3>(3), uj = v.segment<3>(6), wj = v.segment<3>(9);
+  const double fa_i = 6.0 * pi * a_i, fa_j = 6.0 * pi * a_j;
+  const double fb_i = 4.0 * pi * a_i * a_i, fb_j = 4.0 * pi * a_j * a_j;
+  const double fc_i = 8.0 * pi * a_i * a_i * a_i, fc_j = 8.0 * pi * a_j * a_j * a_j;
+  // (X n n + Y (I - n n)) u = Y u + (X - Y)(n.u) n, and [n]_x u = n x u (pair_resistance's blocks).
+  const double nui = n.dot(ui), nwi = n.dot(wi), nuj = n.dot(uj), nwj = n.dot(wj);
+  const auto axial = [&](double x, double y, const Vec3& u, double nu) -> Vec3 { return y * u + ((x - y) * nu) * n; };
+  const Vec3 cui = n.cross(ui), cwi = n.cross(wi), cuj = n.cross(uj), cwj = n.cross(wj);
+  Vector12 f;
+  f.segment<3>(0) = fa_i * (axial(si.x11a, si.y11a, ui, nui) + axial(si.x12a, si.y12a, uj, nuj)) +
+                    (fb_i * si.y11b) * cwi - (fb_j * sj.y12b) * cwj;
+  f.segment<3>(3) = fc_i * (axial(si.x11c, si.y11c, wi, nwi) + axial(si.x12c, si.y12c, wj, nwj)) -
+                    (fb_i * si.y11b) * cui - (fb_i * si.y12b) * cuj;
+  f.segment<3>(6) = fa_i * axial(si.x12a, si.y12a, ui, nui) + fa_j * axial(sj.x11a, sj.y11a, uj, nuj) +
+                    (fb_i * si.y12b) * cwi - (fb_j * sj.y11b) * cwj;
+  f.segment<3>(9) = fc_i * axial(si.x12c, si.y12c, wi, nwi) + fc_j * axial(sj.x11c, sj.y11c, wj, nwj) +
+                    (fb_j * sj.y12b) * cui + (fb_j * sj.y11b) * cuj;
   return f;
 }
 

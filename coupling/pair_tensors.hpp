@@ -39,6 +39,10 @@ Matrix12 pair_resistance(double a_i, double a_j, const Vec3& n, const Resistance
                          const ResistanceScalars& from_j);
 Vector12 pair_strain_forces(double a_i, double a_j, const Vec3& n, const ResistanceScalars& from_i,
                             const ResistanceScalars& from_j, const Mat3& e_i, const Mat3& e_j);
+// pair_resistance(a_i, a_j, n, from_i, from_j) * v from the block structure (X d d + Y (I - d d), Y [d]_x), without
+// forming the 12 x 12 matrix: ~100 flops instead of 288 and no 1152-byte matrix to stream per pair.
+Vector12 pair_resistance_product(double a_i, double a_j, const Vec3& n, const ResistanceScalars& from_i,
+                                 const ResistanceScalars& from_j, const Vector12& v);
 
 // Inverse of the two functions above for n = e_x: the scalars from a 12x12 resistance (ordering as above) and the
 // stresslet response G~ = [dS_i/dV, dS_j/dV] (S_a = -G^{ab} (V_b - V_inf_b), stresslets the particles exert on the
