@@ -66,6 +66,10 @@ VectorFft::~VectorFft() {
 #if defined(__GNUC__) && !defined(__clang__)
 __attribute__((optimize("no-tree-loop-distribute-patterns")))
 #endif
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && \
+    !defined(__SANITIZE_THREAD__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
 void VectorFft::zero_real() {
   typedef double Lanes __attribute__((vector_size(32)));
   const std::ptrdiff_t size = static_cast<std::ptrdiff_t>(3 * real_size_);

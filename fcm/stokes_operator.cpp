@@ -32,7 +32,7 @@ typedef double Lanes __attribute__((vector_size(32)));
 template <bool Windowed>
 SUSPEND_SIMD_CLONES void green_plane(const ShearedGrid& grid, std::complex<double>* f1, std::complex<double>* f2,
                                      std::complex<double>* f3, int iz, double scale, const double* wxy,
-                                     const double* wz) {
+                                     const double* wz, const double* k1_pairs) {
   const int nx = grid.n[0], ny = grid.n[1], nz = grid.n[2];
   const int hx = nx / 2 + 1;
   const double twopi = 2.0 * std::numbers::pi;
@@ -57,8 +57,8 @@ SUSPEND_SIMD_CLONES void green_plane(const ShearedGrid& grid, std::complex<doubl
     const Lanes k3v{k3, k3, k3, k3}, k2v{k2, k2, k2, k2}, gtv{gt, gt, gt, gt}, szv{sz, sz, sz, sz};
     for (; m1 + 2 <= m_end; m1 += 2) {
       const std::size_t i = row + m1;
-      const double ka = c1 * m1, kb = c1 * (m1 + 1);
-      const Lanes k1{ka, ka, kb, kb};
+      Lanes k1;  // (c1 m1, c1 m1, c1 (m1 + 1), c1 (m1 + 1))
+      std::memcpy(&k1, k1_pairs + 2 * m1, sizeof k1);
       const Lanes k2s = k2v - gtv * k1;
       const Lanes inv = 1.0 / (k1 * k1 + k2s * k2s + k3v * k3v);
       Lanes a, b, c;
@@ -91,9 +91,13 @@ void green(const ShearedGrid& grid, VectorFft& fft, double scale, const double* 
   std::complex<double>* f1 = fft.spectrum(0).data();
   std::complex<double>* f2 = fft.spectrum(1).data();
   std::complex<double>* f3 = fft.spectrum(2).data();
-  const int nz = grid.n[2];
+  const int nz = grid.n[2], hx = grid.n[0] / 2 + 1;
+  // k1 of every x mode, each twice (the real and imaginary lane of a mode).
+  std::vector<double> k1_pairs(2 * static_cast<std::size_t>(hx) + 2);
+  const double c1 = 2.0 * std::numbers::pi / grid.length.x();
+  for (int m1 = 0; m1 <= hx; ++m1) k1_pairs[2 * m1] = k1_pairs[2 * m1 + 1] = c1 * m1;
 #pragma omp parallel for schedule(static)
-  for (int iz = 0; iz < nz; ++iz) green_plane<Windowed>(grid, f1, f2, f3, iz, scale, wxy, wz);
+  for (int iz = 0; iz < nz; ++iz) green_plane<Windowed>(grid, f1, f2, f3, iz, scale, wxy, wz, k1_pairs.data());
 }
 
 }  // namespace
