@@ -73,23 +73,40 @@ Vector12 pair_strain_forces(double a_i, double a_j, const Vec3& n, const Resista
 
 Vector12 pair_resistance_product(double a_i, double a_j, const Vec3& n, const ResistanceScalars& si,
                                  const ResistanceScalars& sj, const Vector12& v) {
-  const Vec3 ui = v.segment<3>(0), wi = v.segment<3>(3), uj = v.segment<3>(6), wj = v.segment<3>(9);
+  // Plain scalars (no Eigen temporaries): this runs for every corrected pair in every Krylov iteration.
   const double fa_i = 6.0 * pi * a_i, fa_j = 6.0 * pi * a_j;
   const double fb_i = 4.0 * pi * a_i * a_i, fb_j = 4.0 * pi * a_j * a_j;
   const double fc_i = 8.0 * pi * a_i * a_i * a_i, fc_j = 8.0 * pi * a_j * a_j * a_j;
+  const double n0 = n.x(), n1 = n.y(), n2 = n.z();
+  double x[12];
+  for (int k = 0; k < 12; ++k) x[k] = v(k);
+  const double* ui = x;
+  const double* wi = x + 3;
+  const double* uj = x + 6;
+  const double* wj = x + 9;
+  const auto dot = [&](const double* u) { return n0 * u[0] + n1 * u[1] + n2 * u[2]; };
+  const double nui = dot(ui), nwi = dot(wi), nuj = dot(uj), nwj = dot(wj);
   // (X n n + Y (I - n n)) u = Y u + (X - Y)(n.u) n, and [n]_x u = n x u (pair_resistance's blocks).
-  const double nui = n.dot(ui), nwi = n.dot(wi), nuj = n.dot(uj), nwj = n.dot(wj);
-  const auto axial = [&](double x, double y, const Vec3& u, double nu) -> Vec3 { return y * u + ((x - y) * nu) * n; };
-  const Vec3 cui = n.cross(ui), cwi = n.cross(wi), cuj = n.cross(uj), cwj = n.cross(wj);
+  const double cui[3] = {n1 * ui[2] - n2 * ui[1], n2 * ui[0] - n0 * ui[2], n0 * ui[1] - n1 * ui[0]};
+  const double cwi[3] = {n1 * wi[2] - n2 * wi[1], n2 * wi[0] - n0 * wi[2], n0 * wi[1] - n1 * wi[0]};
+  const double cuj[3] = {n1 * uj[2] - n2 * uj[1], n2 * uj[0] - n0 * uj[2], n0 * uj[1] - n1 * uj[0]};
+  const double cwj[3] = {n1 * wj[2] - n2 * wj[1], n2 * wj[0] - n0 * wj[2], n0 * wj[1] - n1 * wj[0]};
+  // Axial coefficients (X - Y) and transverse Y, scaled.
+  const double ya11 = fa_i * si.y11a, xa11 = fa_i * (si.x11a - si.y11a) * nui;
+  const double ya12 = fa_i * si.y12a, xa12j = fa_i * (si.x12a - si.y12a) * nuj, xa12i = fa_i * (si.x12a - si.y12a) * nui;
+  const double ya22 = fa_j * sj.y11a, xa22 = fa_j * (sj.x11a - sj.y11a) * nuj;
+  const double yc11 = fc_i * si.y11c, xc11 = fc_i * (si.x11c - si.y11c) * nwi;
+  const double yc12 = fc_i * si.y12c, xc12j = fc_i * (si.x12c - si.y12c) * nwj, xc12i = fc_i * (si.x12c - si.y12c) * nwi;
+  const double yc22 = fc_j * sj.y11c, xc22 = fc_j * (sj.x11c - sj.y11c) * nwj;
+  const double b11 = fb_i * si.y11b, b12 = fb_i * si.y12b, b22 = fb_j * sj.y11b, b21 = fb_j * sj.y12b;
+  const double nn[3] = {n0, n1, n2};
   Vector12 f;
-  f.segment<3>(0) = fa_i * (axial(si.x11a, si.y11a, ui, nui) + axial(si.x12a, si.y12a, uj, nuj)) +
-                    (fb_i * si.y11b) * cwi - (fb_j * sj.y12b) * cwj;
-  f.segment<3>(3) = fc_i * (axial(si.x11c, si.y11c, wi, nwi) + axial(si.x12c, si.y12c, wj, nwj)) -
-                    (fb_i * si.y11b) * cui - (fb_i * si.y12b) * cuj;
-  f.segment<3>(6) = fa_i * axial(si.x12a, si.y12a, ui, nui) + fa_j * axial(sj.x11a, sj.y11a, uj, nuj) +
-                    (fb_i * si.y12b) * cwi - (fb_j * sj.y11b) * cwj;
-  f.segment<3>(9) = fc_i * axial(si.x12c, si.y12c, wi, nwi) + fc_j * axial(sj.x11c, sj.y11c, wj, nwj) +
-                    (fb_j * sj.y12b) * cui + (fb_j * sj.y11b) * cuj;
+  for (int c = 0; c < 3; ++c) {
+    f(c) = ya11 * ui[c] + xa11 * nn[c] + ya12 * uj[c] + xa12j * nn[c] + b11 * cwi[c] - b21 * cwj[c];
+    f(3 + c) = yc11 * wi[c] + xc11 * nn[c] + yc12 * wj[c] + xc12j * nn[c] - b11 * cui[c] - b12 * cuj[c];
+    f(6 + c) = ya12 * ui[c] + xa12i * nn[c] + ya22 * uj[c] + xa22 * nn[c] + b12 * cwi[c] - b22 * cwj[c];
+    f(9 + c) = yc12 * wi[c] + xc12i * nn[c] + yc22 * wj[c] + xc22 * nn[c] + b21 * cui[c] + b22 * cuj[c];
+  }
   return f;
 }
 

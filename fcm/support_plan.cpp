@@ -30,10 +30,9 @@ double gaussian_norm(double sigma) {  // (2 pi sigma^2)^(-3/2)
   return 1.0 / (v * std::sqrt(v));
 }
 
-void gaussian_row(double d0, double h, double a, int count, double* out) {
-  // out[i] = exp(-a (d0 + i h)^2) by the exact recurrence.
-  double w = std::exp(-a * d0 * d0), r = std::exp(-a * (2.0 * d0 * h + h * h));
-  const double q = std::exp(-2.0 * a * h * h);
+// out[i] = scale exp(-a (d0 + i h)^2) by the exact recurrence; q = exp(-2 a h^2) (one per width and spacing).
+void gaussian_row(double d0, double h, double a, double q, int count, double* out, double scale = 1.0) {
+  double w = scale * std::exp(-a * d0 * d0), r = std::exp(-a * (2.0 * d0 * h + h * h));
   for (int i = 0; i < count; ++i) {
     out[i] = w;
     w *= r;
@@ -91,10 +90,11 @@ void plan_envelope(const ShearedGrid& g, const Envelope& e, const Extent& x, std
   t.dx0.resize(t.ym.size());
   t.kx0.resize(t.ym.size());
   t.iy.resize(t.ym.size());
-  gaussian_row(x.kz0 * hz - e.centre.z(), hz, am, nzs, t.zm.data());
-  gaussian_row(x.kz0 * hz - e.centre.z(), hz, ad, nzs, t.zd.data());
-  gaussian_row(x.ky0 * hy - e.centre.y(), hy, am, nys, t.ym.data());
-  gaussian_row(x.ky0 * hy - e.centre.y(), hy, ad, nys, t.yd.data());
+  gaussian_row(x.kz0 * hz - e.centre.z(), hz, am, std::exp(-2.0 * am * hz * hz), nzs, t.zm.data());
+  gaussian_row(x.kz0 * hz - e.centre.z(), hz, ad, std::exp(-2.0 * ad * hz * hz), nzs, t.zd.data());
+  gaussian_row(x.ky0 * hy - e.centre.y(), hy, am, std::exp(-2.0 * am * hy * hy), nys, t.ym.data());
+  gaussian_row(x.ky0 * hy - e.centre.y(), hy, ad, std::exp(-2.0 * ad * hy * hy), nys, t.yd.data());
+  const double qm = std::exp(-2.0 * am * hx * hx), qd = std::exp(-2.0 * ad * hx * hx);
   for (int j = 0; j < nys; ++j) {
     t.kx0[j] = row_start(g, e, x.ky0 + j);
     t.dx0[j] = t.kx0[j] * hx - row_centre(g, e, x.ky0 + j);
@@ -103,14 +103,9 @@ void plan_envelope(const ShearedGrid& g, const Envelope& e, const Extent& x, std
     double* m = tables + 3 * static_cast<std::size_t>(j) * x.width;
     double* d = m + x.width;
     double* dd = d + x.width;
-    gaussian_row(t.dx0[j], hx, am, x.width, m);
-    gaussian_row(t.dx0[j], hx, ad, x.width, d);
-    const double ym = t.ym[j], yd = t.yd[j];
-    for (int i = 0; i < x.width; ++i) {
-      m[i] *= ym;
-      d[i] *= yd;
-      dd[i] = (t.dx0[j] + i * hx) * d[i];
-    }
+    gaussian_row(t.dx0[j], hx, am, qm, x.width, m, t.ym[j]);
+    gaussian_row(t.dx0[j], hx, ad, qd, x.width, d, t.yd[j]);
+    for (int i = 0; i < x.width; ++i) dd[i] = (t.dx0[j] + i * hx) * d[i];
   }
   for (int kz = x.kz0; kz <= x.kz1; ++kz) {
     const double dz = kz * hz - e.centre.z();
