@@ -71,12 +71,59 @@ Vector12 pair_strain_forces(double a_i, double a_j, const Vec3& n, const Resista
   return f;
 }
 
-Vector12 pair_resistance_product(double a_i, double a_j, const Vec3& n, const ResistanceScalars& si,
-                                 const ResistanceScalars& sj, const Vector12& v) {
-  // Plain scalars (no Eigen temporaries): this runs for every corrected pair in every Krylov iteration.
+PairResistanceCoefficients pair_resistance_coefficients(double a_i, double a_j, const ResistanceScalars& si,
+                                                        const ResistanceScalars& sj) {
   const double fa_i = 6.0 * pi * a_i, fa_j = 6.0 * pi * a_j;
   const double fb_i = 4.0 * pi * a_i * a_i, fb_j = 4.0 * pi * a_j * a_j;
   const double fc_i = 8.0 * pi * a_i * a_i * a_i, fc_j = 8.0 * pi * a_j * a_j * a_j;
+  PairResistanceCoefficients c;
+  c.ya11 = fa_i * si.y11a;
+  c.xa11 = fa_i * (si.x11a - si.y11a);
+  c.ya12 = fa_i * si.y12a;
+  c.xa12 = fa_i * (si.x12a - si.y12a);
+  c.ya22 = fa_j * sj.y11a;
+  c.xa22 = fa_j * (sj.x11a - sj.y11a);
+  c.yc11 = fc_i * si.y11c;
+  c.xc11 = fc_i * (si.x11c - si.y11c);
+  c.yc12 = fc_i * si.y12c;
+  c.xc12 = fc_i * (si.x12c - si.y12c);
+  c.yc22 = fc_j * sj.y11c;
+  c.xc22 = fc_j * (sj.x11c - sj.y11c);
+  c.b11 = fb_i * si.y11b;
+  c.b12 = fb_i * si.y12b;
+  c.b22 = fb_j * sj.y11b;
+  c.b21 = fb_j * sj.y12b;
+  return c;
+}
+
+Matrix12 pair_resistance(const PairResistanceCoefficients& c, const Vec3& n) {
+  Matrix12 r;
+  const Mat3 nn = n * n.transpose();
+  const Mat3 id = Mat3::Identity();
+  Mat3 nx;
+  nx << 0.0, -n.z(), n.y(), n.z(), 0.0, -n.x(), -n.y(), n.x(), 0.0;
+  r.block<3, 3>(0, 0) = c.ya11 * id + c.xa11 * nn;
+  r.block<3, 3>(6, 6) = c.ya22 * id + c.xa22 * nn;
+  r.block<3, 3>(0, 6) = c.ya12 * id + c.xa12 * nn;
+  r.block<3, 3>(6, 0) = r.block<3, 3>(0, 6);
+  r.block<3, 3>(3, 3) = c.yc11 * id + c.xc11 * nn;
+  r.block<3, 3>(9, 9) = c.yc22 * id + c.xc22 * nn;
+  r.block<3, 3>(3, 9) = c.yc12 * id + c.xc12 * nn;
+  r.block<3, 3>(9, 3) = r.block<3, 3>(3, 9);
+  r.block<3, 3>(3, 0) = -c.b11 * nx;
+  r.block<3, 3>(3, 6) = -c.b12 * nx;
+  r.block<3, 3>(9, 6) = c.b22 * nx;
+  r.block<3, 3>(9, 0) = c.b21 * nx;
+  r.block<3, 3>(0, 3) = r.block<3, 3>(3, 0).transpose();
+  r.block<3, 3>(6, 3) = r.block<3, 3>(3, 6).transpose();
+  r.block<3, 3>(6, 9) = r.block<3, 3>(9, 6).transpose();
+  r.block<3, 3>(0, 9) = r.block<3, 3>(9, 0).transpose();
+  return r;
+}
+
+Vector12 pair_resistance_product(const PairResistanceCoefficients& c, const Vec3& n, const Vector12& v) {
+  // Plain scalars (no Eigen temporaries): this runs for every corrected pair in every Krylov iteration.
+  // (y I + x n n) u = y u + x (n.u) n, and [n]_x u = n x u (pair_resistance's blocks).
   const double n0 = n.x(), n1 = n.y(), n2 = n.z();
   double x[12];
   for (int k = 0; k < 12; ++k) x[k] = v(k);
@@ -86,26 +133,20 @@ Vector12 pair_resistance_product(double a_i, double a_j, const Vec3& n, const Re
   const double* wj = x + 9;
   const auto dot = [&](const double* u) { return n0 * u[0] + n1 * u[1] + n2 * u[2]; };
   const double nui = dot(ui), nwi = dot(wi), nuj = dot(uj), nwj = dot(wj);
-  // (X n n + Y (I - n n)) u = Y u + (X - Y)(n.u) n, and [n]_x u = n x u (pair_resistance's blocks).
   const double cui[3] = {n1 * ui[2] - n2 * ui[1], n2 * ui[0] - n0 * ui[2], n0 * ui[1] - n1 * ui[0]};
   const double cwi[3] = {n1 * wi[2] - n2 * wi[1], n2 * wi[0] - n0 * wi[2], n0 * wi[1] - n1 * wi[0]};
   const double cuj[3] = {n1 * uj[2] - n2 * uj[1], n2 * uj[0] - n0 * uj[2], n0 * uj[1] - n1 * uj[0]};
   const double cwj[3] = {n1 * wj[2] - n2 * wj[1], n2 * wj[0] - n0 * wj[2], n0 * wj[1] - n1 * wj[0]};
-  // Axial coefficients (X - Y) and transverse Y, scaled.
-  const double ya11 = fa_i * si.y11a, xa11 = fa_i * (si.x11a - si.y11a) * nui;
-  const double ya12 = fa_i * si.y12a, xa12j = fa_i * (si.x12a - si.y12a) * nuj, xa12i = fa_i * (si.x12a - si.y12a) * nui;
-  const double ya22 = fa_j * sj.y11a, xa22 = fa_j * (sj.x11a - sj.y11a) * nuj;
-  const double yc11 = fc_i * si.y11c, xc11 = fc_i * (si.x11c - si.y11c) * nwi;
-  const double yc12 = fc_i * si.y12c, xc12j = fc_i * (si.x12c - si.y12c) * nwj, xc12i = fc_i * (si.x12c - si.y12c) * nwi;
-  const double yc22 = fc_j * sj.y11c, xc22 = fc_j * (sj.x11c - sj.y11c) * nwj;
-  const double b11 = fb_i * si.y11b, b12 = fb_i * si.y12b, b22 = fb_j * sj.y11b, b21 = fb_j * sj.y12b;
+  // Axial parts along n of the four outputs.
+  const double af_i = c.xa11 * nui + c.xa12 * nuj, af_j = c.xa12 * nui + c.xa22 * nuj;
+  const double at_i = c.xc11 * nwi + c.xc12 * nwj, at_j = c.xc12 * nwi + c.xc22 * nwj;
   const double nn[3] = {n0, n1, n2};
   Vector12 f;
-  for (int c = 0; c < 3; ++c) {
-    f(c) = ya11 * ui[c] + xa11 * nn[c] + ya12 * uj[c] + xa12j * nn[c] + b11 * cwi[c] - b21 * cwj[c];
-    f(3 + c) = yc11 * wi[c] + xc11 * nn[c] + yc12 * wj[c] + xc12j * nn[c] - b11 * cui[c] - b12 * cuj[c];
-    f(6 + c) = ya12 * ui[c] + xa12i * nn[c] + ya22 * uj[c] + xa22 * nn[c] + b12 * cwi[c] - b22 * cwj[c];
-    f(9 + c) = yc12 * wi[c] + xc12i * nn[c] + yc22 * wj[c] + xc22 * nn[c] + b21 * cui[c] + b22 * cuj[c];
+  for (int k = 0; k < 3; ++k) {
+    f(k) = c.ya11 * ui[k] + c.ya12 * uj[k] + af_i * nn[k] + c.b11 * cwi[k] - c.b21 * cwj[k];
+    f(3 + k) = c.yc11 * wi[k] + c.yc12 * wj[k] + at_i * nn[k] - c.b11 * cui[k] - c.b12 * cuj[k];
+    f(6 + k) = c.ya12 * ui[k] + c.ya22 * uj[k] + af_j * nn[k] + c.b12 * cwi[k] - c.b22 * cwj[k];
+    f(9 + k) = c.yc12 * wi[k] + c.yc22 * wj[k] + at_j * nn[k] + c.b21 * cui[k] + c.b22 * cuj[k];
   }
   return f;
 }

@@ -79,10 +79,7 @@ void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const st
   lever_i_.clear();
   lever_j_.clear();
   s_.clear();
-  delta_i_.clear();
-  delta_j_.clear();
-  radius_i_.clear();
-  radius_j_.clear();
+  delta_r_.clear();
   delta_strain_.clear();
   Mat3 e_hat = Mat3::Zero();
   e_hat(0, 1) = e_hat(1, 0) = 0.5;
@@ -97,10 +94,7 @@ void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const st
     lever_i_.push_back(g.lever_i());
     lever_j_.push_back(g.lever_j());
     s_.push_back(s);
-    delta_i_.push_back(si);
-    delta_j_.push_back(sj);
-    radius_i_.push_back(g.a_i);
-    radius_j_.push_back(g.a_j);
+    delta_r_.push_back(pair_resistance_coefficients(g.a_i, g.a_j, si, sj));
     delta_strain_.push_back(pair_strain_forces(g.a_i, g.a_j, g.n, si, sj, e_hat, e_hat));
   }
 }
@@ -108,8 +102,7 @@ void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const st
 Vector12 SubgridLubrication::pair_forces(std::size_t k, const Eigen::VectorXd& dv, double shear_rate) const {
   Vector12 v;
   v << dv.segment<6>(6 * static_cast<Eigen::Index>(links_[k].i)), dv.segment<6>(6 * static_cast<Eigen::Index>(links_[k].j));
-  return shear_rate * delta_strain_[k] - pair_resistance_product(radius_i_[k], radius_j_[k], normal_[k], delta_i_[k],
-                                                                 delta_j_[k], v);
+  return shear_rate * delta_strain_[k] - pair_resistance_product(delta_r_[k], normal_[k], v);
 }
 
 void SubgridLubrication::add_velocity_forces(const Eigen::VectorXd& dv, Eigen::VectorXd& f) const {
@@ -154,7 +147,7 @@ void SubgridLubrication::resistance_matrix(const std::vector<double>& radius, do
   std::size_t c = 0;
   for (std::size_t k = 0; k < links_.size(); ++k) {
     if (!(s_[k] < s_max)) continue;
-    const Matrix12 r = pair_resistance(radius_i_[k], radius_j_[k], normal_[k], delta_i_[k], delta_j_[k]);
+    const Matrix12 r = pair_resistance(delta_r_[k], normal_[k]);
     diag[links_[k].i] += r.block<6, 6>(0, 0);
     diag[links_[k].j] += r.block<6, 6>(6, 6);
     coupling[c++] = r.block<6, 6>(0, 6);

@@ -84,10 +84,9 @@ class SubgridLubrication {
   std::vector<Vec3> normal_;
   std::vector<double> lever_i_, lever_j_, s_;
   std::vector<BlockLink> near_links_;
-  // Delta_R of each pair kept as its scalars (pair_resistance_product applies it; the 12 x 12 matrices would be
-  // 1152 bytes per pair to stream through every application).
-  std::vector<ResistanceScalars> delta_i_, delta_j_;
-  std::vector<double> radius_i_, radius_j_;
+  // Delta_R of each pair kept as its block coefficients (pair_resistance_product applies it; the 12 x 12 matrices
+  // would be 1152 bytes per pair to stream through every application).
+  std::vector<PairResistanceCoefficients> delta_r_;
   std::vector<Vector12> delta_strain_;  // for unit shear rate
 };
 

@@ -46,7 +46,9 @@ TEST(CouplingPairTensors, AssemblyEqualsThePairwiseLubricationLaw) {
       Vector12 v;
       v << 0.3, -1.2, 0.7, 0.25, 0.9, -0.4, -0.6, 0.1, 1.1, -0.8, 0.35, 0.5;
       const Vector12 rv = mine * v;
-      EXPECT_LT((pair_resistance_product(1.0, lambda, n, si, sj, v) - rv).norm(), 1e-12 * rv.norm()) << lambda;
+      const PairResistanceCoefficients c = pair_resistance_coefficients(1.0, lambda, si, sj);
+      EXPECT_LT((pair_resistance(c, n) - mine).norm(), 1e-12 * mine.norm()) << lambda;
+      EXPECT_LT((pair_resistance_product(c, n, v) - rv).norm(), 1e-12 * rv.norm()) << lambda;
     }
   }
 }
