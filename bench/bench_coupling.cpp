@@ -5,7 +5,7 @@
 // Cholesky), the FCM Stokes solves and the rest; every time is reported as a ratio to one bare FFT Stokes solve
 // (3 forward + 3 inverse r2c transforms of the same grid, FFTW measure plans), measured in the same run.
 // Usage: bench_coupling [steps=10] [warmup=5] [cache_dir=coupling_cache] [krylov_tolerance=1e-4]
-//                       [near_field=cg|cholesky] [preconditioner_cutoff=2.2] [inner_max_iterations=50]
+//                       [near_field=cg|cholesky] [preconditioner_cutoff=2.2] [inner_max_iterations=5]
 //                       [inner_tolerance=1e-2] [min_gap=0.01 (of the initial packing, a)]
 // Deterministic instruction counts of the timed steps only (the bare FFTs and the warm-up are not collected):
 //   OMP_NUM_THREADS=1 valgrind --tool=callgrind --collect-atstart=no build/bin/bench_coupling 4 5 coupling_cache
