@@ -33,6 +33,13 @@ struct PairSums {
   std::size_t contacts = 0;  // pairs with gap < 0
 };
 
+// Tangent stiffnesses of a pair's contact law at this step (PairForce::normal_stiffness, tangential_stiffness),
+// for the linearly implicit contact step.
+struct ContactStiffness {
+  double normal = 0.0, tangential = 0.0;
+  bool any() const { return normal > 0.0 || tangential > 0.0; }
+};
+
 // Pairs of the list whose gap is below interaction_gap, with their geometry.
 void compact_active_pairs(const std::vector<NeighbourPair>& list, const Particles& p, const Box& box,
                           double interaction_gap, std::vector<ActivePair>& active);
@@ -40,17 +47,21 @@ void compact_active_pairs(const std::vector<NeighbourPair>& list, const Particle
 // Evaluates law(geometry, motion, dt, history[k]) -> PairForce on every active pair and accumulates into sums;
 // the force on j of each pair goes to pair_force[k] (snapshots). velocity/omega are the particle velocities the
 // contact laws see (the last step's); the image of j moves at u_j - y_images gammadot L_y x (Lees-Edwards).
-// `local` is per-thread scratch kept by the caller so that steps do not allocate.
+// `local` is per-thread scratch kept by the caller so that steps do not allocate. If `stiffness` is given, it gets
+// each pair's contact stiffnesses (same order as active).
 template <class Law>
 void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particles& p, double image_velocity,
                             const Law& law, double dt, std::vector<PairHistory>& history, PairSums& sums,
-                            std::vector<Vec3>& pair_force, std::vector<PairSums>& local) {
+                            std::vector<Vec3>& pair_force, std::vector<PairSums>& local,
+                            std::vector<ContactStiffness>* stiffness = nullptr) {
   const std::size_t n_particles = p.size();
   // Small systems stay on one thread: a parallel region costs more than their whole loop (and far more when the
   // cores are shared). The split depends only on the pair count, so results stay reproducible.
   const int nthreads = active.size() >= 2048 ? omp_get_max_threads() : 1;
   local.resize(nthreads);
   pair_force.resize(active.size());
+  if (stiffness) stiffness->resize(active.size());
+  ContactStiffness* const pair_stiffness = stiffness ? stiffness->data() : nullptr;
   sums.force.resize(n_particles);
   sums.torque.resize(n_particles);
 #pragma omp parallel num_threads(nthreads)
@@ -76,6 +87,7 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
       const PairForce f = law(pr.geometry, m, dt, history[k]);
       const Vec3 fj = f.total_on_j();
       pair_force[k] = fj;
+      if (pair_stiffness) pair_stiffness[k] = {f.normal_stiffness, f.tangential_stiffness};
       force[pr.j] += fj;
       force[pr.i] -= fj;
       torque[pr.i] += f.torque_i;

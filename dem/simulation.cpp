@@ -12,12 +12,6 @@ namespace suspend {
 
 using std::numbers::pi;
 
-void TimeStepParams::validate() const {
-  if (mode == Mode::fixed && !(fixed > 0.0)) throw InputError("run.time_step.fixed must be > 0");
-  if (!(max_displacement > 0.0)) throw InputError("run.time_step.max_displacement must be > 0");
-  if (!(max > 0.0)) throw InputError("run.time_step.max must be > 0");
-}
-
 void SimulationParams::validate() const {
   suspend::validate(contact);
   if (lubrication) resistance.validate();
@@ -36,6 +30,9 @@ void SimulationParams::validate() const {
     throw InputError("flow.periods must be >= 1 for a wavy shear (flow.amplitude != 0)");
   if (integrator == Integrator::inertial && !(stokes_number > 0.0 && std::isfinite(stokes_number)))
     throw InputError("run.stokes_number must be > 0 for run.integrator = inertial");
+  if (time_step.implicit_contacts && (integrator != Integrator::overdamped || !lubrication))
+    throw InputError("run.time_step.contacts = implicit needs run.integrator = overdamped and "
+                     "hydrodynamics.lubrication.enabled = true (or hydrodynamics.model = fcm)");
 }
 
 PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, const SimulationParams& params)
@@ -127,9 +124,10 @@ void PairwiseSimulation::contact_forces(double image_velocity) {
   for (std::size_t k = 0; k < active_.size(); ++k) active_index_[k] = {active_[k].i, active_[k].j};
   pair_history_.resize(active_.size());
   history_.gather(active_index_, pair_history_);
+  std::vector<ContactStiffness>* stiffness = params_.time_step.implicit_contacts ? &stiffness_ : nullptr;
   with_law(params_.contact, [&](const auto& law) {
     accumulate_pair_forces(active_, p, image_velocity, law, state_.last_dt, pair_history_, sums_, pair_force_,
-                           scratch_);
+                           scratch_, stiffness);
   });
   if (sums_.max_overlap > params_.max_overlap * a_min_) {
     std::ostringstream s;
@@ -146,22 +144,27 @@ double PairwiseSimulation::overdamped_velocities() {
   const double volume = box_.volume();
   std::ostringstream where;
   where << "step " << state_.step << ", strain " << state_.strain;
+  ImplicitContacts implicit;
+  if (params_.time_step.implicit_contacts) implicit = {&stiffness_, dt_};
   if (solver_ && params_.control == FlowControl::rate) {
-    solver_->solve(p, species_, active_, flow(rate_), sums_.force, sums_.torque, solve_, where.str());
+    solver_->solve(p, species_, active_, flow(rate_), sums_.force, sums_.torque, solve_, where.str(), implicit);
   } else if (solver_) {
-    // Rate-driven problem at unit rate and force-driven problem at zero rate; the stress is linear in both.
-    solver_->solve(p, species_, active_, flow(1.0), zero_, zero_, solve_, where.str());
-    force_solver_->solve(p, species_, active_, flow(0.0), sums_.force, sums_.torque, force_solve_, where.str());
-    const double sigma_h = 1.0 + (solve_.stress[Contribution::hydrodynamic](0, 1) +
-                                  solve_.stress[Contribution::lubrication](0, 1)) / volume;
+    // Rate-driven problem at unit rate and force-driven problem at zero rate; velocities, stress and the implicit
+    // contact changes are linear in both.
+    solver_->solve(p, species_, active_, flow(1.0), zero_, zero_, solve_, where.str(), implicit);
+    force_solver_->solve(p, species_, active_, flow(0.0), sums_.force, sums_.torque, force_solve_, where.str(),
+                         implicit);
+    const double sigma_h = 1.0 + solve_.stress.total()(0, 1) / volume;
     const double sigma_c = (sums_.virial.total()(0, 1) + force_solve_.stress.total()(0, 1)) / volume;
     rate_ = (params_.shear_stress - sigma_c) / sigma_h;
     for (std::size_t i = 0; i < n; ++i) {
       solve_.velocity[i] = rate_ * solve_.velocity[i] + force_solve_.velocity[i];
       solve_.angular_velocity[i] = rate_ * solve_.angular_velocity[i] + force_solve_.angular_velocity[i];
     }
-    for (auto c : {Contribution::hydrodynamic, Contribution::lubrication})
-      solve_.stress[c] = rate_ * solve_.stress[c] + force_solve_.stress[c];
+    for (std::size_t c = 0; c < contribution_count; ++c)
+      solve_.stress.part[c] = rate_ * solve_.stress.part[c] + force_solve_.stress.part[c];
+    for (std::size_t k = 0; k < solve_.contact_change_on_j.size(); ++k)
+      solve_.contact_change_on_j[k] = rate_ * solve_.contact_change_on_j[k] + force_solve_.contact_change_on_j[k];
   } else if (params_.control == FlowControl::stress) {
     // Drag only: the hydrodynamic stress is 2 E_inf + the Stokes stresslets, the rest is the contacts'.
     const double sigma_h = 1.0 + (10.0 / 3.0) * pi * radius_cubed_ / volume;
@@ -228,8 +231,9 @@ void PairwiseSimulation::finish_stress(double rate) {
   const Particles& p = state_.particles;
   stress_ = sums_.virial;
   if (solver_) {
-    stress_[Contribution::hydrodynamic] = solve_.stress[Contribution::hydrodynamic];
-    stress_[Contribution::lubrication] = solve_.stress[Contribution::lubrication];
+    // Hydrodynamic and lubrication sums; with implicit contacts also the contacts' change over the step.
+    for (std::size_t c = 0; c < contribution_count; ++c) stress_.part[c] += solve_.stress.part[c];
+    for (std::size_t k = 0; k < solve_.contact_change_on_j.size(); ++k) pair_force_[k] += solve_.contact_change_on_j[k];
   } else {
     const hydro::WavyShear f = flow(rate);
     Mat3& h = stress_[Contribution::hydrodynamic];
@@ -251,6 +255,15 @@ void PairwiseSimulation::evaluate() {
       p.velocity[i] = Vec3(v[0], v[1], v[2]);
       p.angular_velocity[i] = Vec3(v[3], v[4], v[5]);
     }
+  // Implicit contacts: the step precedes the solve (time_step_control.hpp), from the last step's speeds.
+  if (params_.time_step.implicit_contacts) {
+    const hydro::WavyShear f = flow(state_.shear_rate);
+    double last_speed = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      last_speed = std::max(last_speed, (p.velocity[i] - f.velocity(p.position[i])).norm());
+    dt_ = overdamped_time_step(params_.time_step, params_.contact, state_.shear_rate, last_speed, a_min_,
+                               state_.last_dt);
+  }
   // Contacts see the image velocity of the last step's rate (their velocities are that step's).
   contact_forces(state_.shear_rate * box_.length().y());
   rate_ = params_.control == FlowControl::rate ? params_.shear_rate : state_.shear_rate;
@@ -266,20 +279,18 @@ void PairwiseSimulation::evaluate() {
 
   // Time step: fixed, or bounded strain increment, non-affine displacement and the fastest contact or
   // hydrodynamic time scale (overdamped: drag relaxation 6 pi a / k; inertial: sqrt(m / k) and m / R).
-  if (params_.time_step.mode == TimeStepParams::Mode::fixed) {
-    dt_ = params_.time_step.fixed;
-  } else {
-    const TimeStepParams& ts = params_.time_step;
+  const TimeStepParams& ts = params_.time_step;
+  if (ts.mode == TimeStepParams::Mode::fixed) {
+    dt_ = ts.fixed;
+  } else if (inertial) {
     const double k = stiffness_scale(params_.contact);
     dt_ = std::abs(rate_) > 0.0 ? ts.max / std::abs(rate_) : ts.max;
     if (max_speed > 0.0) dt_ = std::min(dt_, ts.max_displacement / max_speed);
-    if (inertial) {
-      const double m_min = *std::min_element(mass_.begin(), mass_.end());
-      dt_ = std::min(dt_, ts.stability * std::sqrt(m_min / k));
-      if (relaxation_rate_ > 0.0) dt_ = std::min(dt_, ts.stability / relaxation_rate_);
-    } else {
-      dt_ = std::min(dt_, ts.stability * 6.0 * pi * a_min_ / k);
-    }
+    const double m_min = *std::min_element(mass_.begin(), mass_.end());
+    dt_ = std::min(dt_, ts.stability * std::sqrt(m_min / k));
+    if (relaxation_rate_ > 0.0) dt_ = std::min(dt_, ts.stability / relaxation_rate_);
+  } else if (!ts.implicit_contacts) {
+    dt_ = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt);
   }
   evaluated_ = true;
 }

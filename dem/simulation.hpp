@@ -33,20 +33,11 @@
 #include "dem/contact/contact_law.hpp"
 #include "dem/contact_history.hpp"
 #include "dem/integrate/resistance_solver.hpp"
+#include "dem/integrate/time_step_control.hpp"
 #include "dem/pair_forces.hpp"
 #include "dem/verlet_list.hpp"
 
 namespace suspend {
-
-struct TimeStepParams {
-  enum class Mode { fixed, adaptive };
-  Mode mode = Mode::adaptive;
-  double fixed = 1.0e-3;             // time step when mode == fixed (1/gammadot)
-  double max_displacement = 2.0e-3;  // adaptive: largest non-affine displacement per step (a_1)
-  double max = 1.0e-2;               // adaptive: largest strain increment per step, gammadot dt
-  double stability = 0.2;            // dt <= stability * (fastest relaxation or oscillation time)
-  void validate() const;
-};
 
 enum class FlowControl { rate, stress };
 enum class Integrator { overdamped, inertial };
@@ -134,6 +125,7 @@ class PairwiseSimulation {
   std::vector<NeighbourPair> active_index_;
   std::vector<PairHistory> pair_history_;
   std::vector<Vec3> pair_force_;
+  std::vector<ContactStiffness> stiffness_;  // implicit contacts: per active pair
   std::vector<double> species_radius_;  // distinct radii
   std::vector<int> species_;            // index into species_radius_ per particle
   std::optional<ResistanceSolver> solver_;

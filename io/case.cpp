@@ -182,6 +182,8 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     ts.max_displacement = t.number("max_displacement", ts.max_displacement, Range::positive());
     ts.max = t.number("max", ts.max, Range::positive());
     ts.stability = t.number("stability", ts.stability, Range::open_closed(0.0, 1.0));
+    ts.implicit_contacts = t.choice("contacts", "explicit", {"explicit", "implicit"}) == "implicit";
+    ts.growth = t.number("growth", ts.growth, Range::open_closed(1.0, 10.0));
     t.finish();
 
     SchemaReader o = r.child("output");
@@ -289,6 +291,8 @@ YAML::Node to_yaml(const Case& c) {
   r["time_step"]["max_displacement"] = number_node(ts.max_displacement);
   r["time_step"]["max"] = number_node(ts.max);
   r["time_step"]["stability"] = number_node(ts.stability);
+  r["time_step"]["contacts"] = ts.implicit_contacts ? "implicit" : "explicit";
+  r["time_step"]["growth"] = number_node(ts.growth);
   r["output"]["series_every"] = number_node(c.run.output.series_every);
   r["output"]["snapshot_every"] = number_node(c.run.output.snapshot_every);
   r["output"]["checkpoint_every"] = number_node(c.run.output.checkpoint_every);
