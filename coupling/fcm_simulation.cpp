@@ -74,6 +74,14 @@ FcmSimulation::FcmSimulation(SimulationState state, const Box& box, const Simula
                                              fcm_.subgrid_model_taper_start},
                      params_.resistance.lubrication, tp, fcm_.cache_dir);
   }
+  if (params_.time_step.implicit_contacts && !subgrid_)
+    throw InputError("run.time_step.contacts = implicit needs hydrodynamics.fcm.subgrid = true");
+  if (params_.integrator != Integrator::overdamped)
+    throw InputError("hydrodynamics.model = fcm needs run.integrator = overdamped");
+  if (params_.wave_amplitude != 0.0)
+    throw InputError("hydrodynamics.model = fcm needs flow.type = simple_shear");
+  if (params_.control == FlowControl::rate || state_.shear_rate == 0.0) state_.shear_rate = params_.shear_rate;
+  rate_ = state_.shear_rate;
   range_ = std::max(interaction_range(params_.contact), subgrid_ ? subgrid_->range() : 0.0);
   list_ = VerletList(range_, params_.skin);
   if (state_.warm_start.size() == 11 * p.size() || state_.warm_start.size() == 22 * p.size())
@@ -97,6 +105,14 @@ void FcmSimulation::fail(const std::string& what) const {
 void FcmSimulation::evaluate() {
   Particles& p = state_.particles;
   const std::size_t n = p.size();
+  const TimeStepParams& ts = params_.time_step;
+  // Implicit contacts: the step precedes the solve (time_step_control.hpp), from the last step's speeds.
+  if (ts.implicit_contacts) {
+    double last_speed = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      last_speed = std::max(last_speed, (p.velocity[i] - Vec3(state_.shear_rate * p.position[i].y(), 0, 0)).norm());
+    dt_ = overdamped_time_step(ts, params_.contact, state_.shear_rate, last_speed, a_min_, state_.last_dt);
+  }
   double t0 = omp_get_wtime();
   list_.update(p.position, p.radius, box_);
   compact_active_pairs(list_.pairs(), p, box_, range_, active_);
@@ -104,10 +120,12 @@ void FcmSimulation::evaluate() {
   for (std::size_t k = 0; k < active_.size(); ++k) active_index_[k] = {active_[k].i, active_[k].j};
   pair_history_.resize(active_.size());
   history_.gather(active_index_, pair_history_);
-  const double image_velocity = params_.shear_rate * box_.length().y();
+  // Contacts see the image velocity of the last step's rate (their velocities are that step's).
+  const double image_velocity = state_.shear_rate * box_.length().y();
+  std::vector<ContactStiffness>* stiffness = ts.implicit_contacts ? &stiffness_ : nullptr;
   with_law(params_.contact, [&](const auto& law) {
     accumulate_pair_forces(active_, p, image_velocity, law, state_.last_dt, pair_history_, sums_, pair_force_,
-                           scratch_);
+                           scratch_, stiffness);
   });
   contact_seconds_ += omp_get_wtime() - t0;
 
@@ -120,15 +138,12 @@ void FcmSimulation::evaluate() {
   }
 
   t0 = omp_get_wtime();
-  if (subgrid_) subgrid_->assemble(active_, species_);
-  subgrid_seconds_ += omp_get_wtime() - t0;
-  const coupling::CoupledProblem pb{p.position, p.radius, sums_.force, sums_.torque, params_.shear_rate,
-                                    box_.shear_offset()};
-  try {
-    mobility_->solve(pb, subgrid_ ? &*subgrid_ : nullptr, result_);
-  } catch (const NumericalError& e) {
-    fail(e.what());
+  if (subgrid_) {
+    subgrid_->assemble(active_, species_);
+    if (ts.implicit_contacts) subgrid_->add_contact_steps(active_, stiffness_, dt_, p.position, box_.length().y());
   }
+  subgrid_seconds_ += omp_get_wtime() - t0;
+  solve_velocities();
   double max_speed = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     p.velocity[i] = result_.velocities[i];
@@ -144,20 +159,60 @@ void FcmSimulation::evaluate() {
 
   const double volume = box_.volume();
   stress_ = sums_.virial;
+  for (std::size_t k = 0; k < result_.contact_change_on_j.size(); ++k) {
+    add_contact_change_virial(active_[k].geometry, result_.contact_change_on_j[k], stress_);
+    pair_force_[k] += result_.contact_change_on_j[k];
+  }
   for (auto& m : stress_.part) m /= volume;
   fcm::MobilityResult fcm_part;
   fcm_part.stresslets = result_.stresslets;
-  stress_[Contribution::hydrodynamic] = mobility_->solver().bulk_stress(fcm_part, params_.shear_rate);
+  stress_[Contribution::hydrodynamic] = mobility_->solver().bulk_stress(fcm_part, rate_);
   stress_[Contribution::lubrication] = result_.subgrid_stress / volume;
 
-  if (params_.time_step.mode == TimeStepParams::Mode::fixed) {
-    dt_ = params_.time_step.fixed;
-  } else {
-    dt_ = params_.time_step.max;
-    if (max_speed > 0.0) dt_ = std::min(dt_, params_.time_step.max_displacement / max_speed);
-    dt_ = std::min(dt_, params_.time_step.stability * 6.0 * pi * a_min_ / stiffness_scale(params_.contact));
-  }
+  if (!ts.implicit_contacts) dt_ = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt);
   evaluated_ = true;
+}
+
+double FcmSimulation::hydrodynamic_shear_stress(const coupling::CoupledResult& r, double rate) const {
+  fcm::MobilityResult fcm_part;
+  fcm_part.stresslets = r.stresslets;
+  StressTensors changes;
+  for (std::size_t k = 0; k < r.contact_change_on_j.size(); ++k)
+    add_contact_change_virial(active_[k].geometry, r.contact_change_on_j[k], changes);
+  return mobility_->solver().bulk_stress(fcm_part, rate)(0, 1) * box_.volume() + r.subgrid_stress(0, 1) +
+         changes.total()(0, 1);
+}
+
+void FcmSimulation::solve_velocities() {
+  const Particles& p = state_.particles;
+  const std::size_t n = p.size();
+  coupling::CoupledProblem pb{p.position, p.radius, sums_.force, sums_.torque, rate_, box_.shear_offset()};
+  try {
+    if (params_.control == FlowControl::rate) {
+      pb.shear_rate = rate_ = params_.shear_rate;
+      mobility_->solve(pb, subgrid_ ? &*subgrid_ : nullptr, result_);
+      return;
+    }
+    mobility_->solve_parts(pb, subgrid_ ? &*subgrid_ : nullptr, result_, force_result_);
+  } catch (const NumericalError& e) {
+    fail(e.what());
+  }
+  // Sigma_xy V = gammadot (shear part, which includes 2 E_inf V) + force part + the contacts' virial.
+  const double sigma_h = hydrodynamic_shear_stress(result_, 1.0);
+  const double sigma_c = hydrodynamic_shear_stress(force_result_, 0.0) + sums_.virial.total()(0, 1);
+  rate_ = (params_.shear_stress * box_.volume() - sigma_c) / sigma_h;
+  if (!std::isfinite(rate_)) fail("the stress control gave a non-finite shear rate");
+  for (std::size_t i = 0; i < n; ++i) {
+    result_.velocities[i] = rate_ * result_.velocities[i] + force_result_.velocities[i];
+    result_.angular_velocities[i] = rate_ * result_.angular_velocities[i] + force_result_.angular_velocities[i];
+    result_.stresslets[i] = rate_ * result_.stresslets[i] + force_result_.stresslets[i];
+  }
+  result_.subgrid_stress = rate_ * result_.subgrid_stress + force_result_.subgrid_stress;
+  for (std::size_t k = 0; k < result_.contact_change_on_j.size(); ++k)
+    result_.contact_change_on_j[k] = rate_ * result_.contact_change_on_j[k] + force_result_.contact_change_on_j[k];
+  result_.iterations += force_result_.iterations;
+  result_.stokes_solves += force_result_.stokes_solves;
+  result_.residual = std::max(result_.residual, force_result_.residual);
 }
 
 void FcmSimulation::advance() {
@@ -171,17 +226,18 @@ void FcmSimulation::advance() {
     nonaffine_[i] = (p.velocity[i] - ambient_velocity(p.position[i])) * dt_;
     p.position[i] += p.velocity[i] * dt_;
   }
-  const double dstrain = params_.shear_rate * dt_;
+  const double dstrain = rate_ * dt_;
   state_.strain += dstrain;
   state_.time += dt_;
   state_.last_dt = dt_;
+  state_.shear_rate = rate_;
   ++state_.step;
   box_.set_strain(state_.strain);
   for (std::size_t i = 0; i < n; ++i) {
     const int crossings = box_.wrap(p.position[i]);
-    p.velocity[i].x() -= crossings * params_.shear_rate * ly;  // paper 000, eq. 16d
+    p.velocity[i].x() -= crossings * rate_ * ly;  // paper 000, eq. 16d
   }
-  list_.record_motion(nonaffine_, dstrain);
+  list_.record_motion(nonaffine_, std::abs(dstrain));
   evaluated_ = false;
 }
 

@@ -30,9 +30,8 @@ void SimulationParams::validate() const {
     throw InputError("flow.periods must be >= 1 for a wavy shear (flow.amplitude != 0)");
   if (integrator == Integrator::inertial && !(stokes_number > 0.0 && std::isfinite(stokes_number)))
     throw InputError("run.stokes_number must be > 0 for run.integrator = inertial");
-  if (time_step.implicit_contacts && (integrator != Integrator::overdamped || !lubrication))
-    throw InputError("run.time_step.contacts = implicit needs run.integrator = overdamped and "
-                     "hydrodynamics.lubrication.enabled = true (or hydrodynamics.model = fcm)");
+  if (time_step.implicit_contacts && integrator != Integrator::overdamped)
+    throw InputError("run.time_step.contacts = implicit needs run.integrator = overdamped");
 }
 
 PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, const SimulationParams& params)
@@ -41,6 +40,9 @@ PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, co
                       params.lubrication ? params.resistance.lubrication.outer_cutoff : 0.0)),
       list_(range_, params.skin) {
   params_.validate();
+  if (params_.time_step.implicit_contacts && !params_.lubrication)
+    throw InputError("run.time_step.contacts = implicit needs the resistance solve: hydrodynamics.lubrication.enabled "
+                     "= true (or hydrodynamics.model = fcm)");
   box_.set_strain(state_.strain);
   const Particles& p = state_.particles;
   const std::size_t n = p.size();

@@ -197,9 +197,12 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   }
   top.finish();
   c.simulation.validate();
+  if (c.hydrodynamics == "pairwise" && c.simulation.time_step.implicit_contacts && !c.simulation.lubrication)
+    throw InputError("run.time_step.contacts = implicit needs hydrodynamics.lubrication.enabled = true (the "
+                     "resistance solve) or hydrodynamics.model = fcm");
   if (c.hydrodynamics == "fcm") {
-    if (c.simulation.control != FlowControl::rate)
-      throw InputError("flow.control = stress is not yet available with hydrodynamics.model = fcm (use rate)");
+    if (c.simulation.time_step.implicit_contacts && !c.fcm.subgrid)
+      throw InputError("run.time_step.contacts = implicit needs hydrodynamics.fcm.subgrid = true");
     if (c.flow != "simple_shear")
       throw InputError("flow.type = " + c.flow + " is not available with hydrodynamics.model = fcm (use simple_shear)");
     if (c.simulation.integrator != Integrator::overdamped)

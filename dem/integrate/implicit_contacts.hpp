@@ -16,6 +16,7 @@
 #pragma once
 #include <Eigen/Dense>
 
+#include "core/stress.hpp"
 #include "core/vec.hpp"
 #include "dem/contact/pair_geometry.hpp"
 #include "dem/hydro/ambient_flow.hpp"
@@ -59,6 +60,14 @@ struct ContactStep {
   // Change of the contact force on j over the step for lab-frame pair velocities V = V_inf + dV.
   Vec3 force_change_on_j(const hydro::Vector12& dv) const { return -(s * (u_inf + c * dv)); }
 };
+
+// Adds the virial -sym(d dF) of a contact force change on j to the sums, its normal part to contact_normal and
+// its tangential part to contact_tangential.
+inline void add_contact_change_virial(const PairGeometry& g, const Vec3& change, StressTensors& sums) {
+  const Vec3 normal = change.dot(g.n) * g.n;
+  sums[Contribution::contact_normal] += -sym_outer(g.d, normal);
+  sums[Contribution::contact_tangential] += -sym_outer(g.d, Vec3(change - normal));
+}
 
 inline ContactStep contact_step(const PairGeometry& g, const Vec3& x_i, const ContactStiffness& k, double dt,
                                 const hydro::WavyShear& flow) {

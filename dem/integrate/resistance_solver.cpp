@@ -268,18 +268,9 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
   } else {
     for (const Mat3& s : pair_stress_) lub += s;
   }
-  if (implicit.enabled()) {  // virial of the contact changes, split into normal and tangential parts
-    Mat3& normal = out.stress[Contribution::contact_normal];
-    Mat3& tangential = out.stress[Contribution::contact_tangential];
-    for (std::ptrdiff_t k = 0; k < np; ++k) {
-      const Vec3& c = out.contact_change_on_j[k];
-      if (c.squaredNorm() == 0.0) continue;
-      const Vec3& n = pairs[k].geometry.n;
-      const Vec3 c_n = c.dot(n) * n;
-      normal += -sym_outer(pairs[k].geometry.d, c_n);
-      tangential += -sym_outer(pairs[k].geometry.d, Vec3(c - c_n));
-    }
-  }
+  if (implicit.enabled())
+    for (std::ptrdiff_t k = 0; k < np; ++k)
+      if (stiff(implicit, k)) add_contact_change_virial(pairs[k].geometry, out.contact_change_on_j[k], out.stress);
   Mat3& hyd = out.stress[Contribution::hydrodynamic];
   for (std::size_t i = 0; i < p.size(); ++i) hyd += hydro::stokes_stresslet(p.radius[i], p.position[i], flow);
 }

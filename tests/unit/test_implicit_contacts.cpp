@@ -205,7 +205,7 @@ TEST(ImplicitContacts, CheckpointedStateContinuesBitForBit) {
 TEST(ImplicitContacts, NeedsTheOverdampedResistanceSolve) {
   SimulationParams params = frictional_lubricated(1.0e4);
   params.lubrication = false;
-  EXPECT_THROW(params.validate(), InputError);
+  EXPECT_THROW(PairwiseSimulation(cluster(), Box(10, 10, 10), params), InputError);
   params.lubrication = true;
   params.integrator = Integrator::inertial;
   EXPECT_THROW(params.validate(), InputError);
