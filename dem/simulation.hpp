@@ -22,6 +22,7 @@
 // checks them; advance() moves the particles. A numerical failure is raised from evaluate(), before anything
 // moved, so the state is still the last good one and can be checkpointed.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -96,7 +97,9 @@ class PairwiseSimulation {
   double time_step() const { return dt_; }
   const StressTensors& stress() const { return stress_; }
   double max_overlap() const { return sums_.max_overlap; }
-  int solver_iterations() const { return solve_.iterations; }
+  // Conjugate-gradient iterations of the step (both problems under stress control) and the larger residual.
+  int solver_iterations() const { return solve_.iterations + (force_solver_ ? force_solve_.iterations : 0); }
+  double solver_residual() const { return std::max(solve_.residual, force_solver_ ? force_solve_.residual : 0.0); }
   std::size_t contact_count() const { return sums_.contacts; }
   const std::vector<ActivePair>& active_pairs() const { return active_; }
   const VerletList& neighbours() const { return list_; }
