@@ -106,13 +106,6 @@ void FcmSimulation::evaluate() {
   Particles& p = state_.particles;
   const std::size_t n = p.size();
   const TimeStepParams& ts = params_.time_step;
-  // Implicit contacts: the step precedes the solve (time_step_control.hpp), from the last step's speeds.
-  if (ts.implicit_contacts) {
-    double last_speed = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      last_speed = std::max(last_speed, (p.velocity[i] - Vec3(state_.shear_rate * p.position[i].y(), 0, 0)).norm());
-    dt_ = overdamped_time_step(ts, params_.contact, state_.shear_rate, last_speed, a_min_, state_.last_dt);
-  }
   double t0 = omp_get_wtime();
   list_.update(p.position, p.radius, box_);
   compact_active_pairs(list_.pairs(), p, box_, range_, active_);
@@ -128,6 +121,15 @@ void FcmSimulation::evaluate() {
                            scratch_, stiffness);
   });
   contact_seconds_ += omp_get_wtime() - t0;
+  // Implicit contacts: the step precedes the solve (time_step_control.hpp), from the last step's speeds and this
+  // step's contacts.
+  if (ts.implicit_contacts) {
+    double last_speed = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      last_speed = std::max(last_speed, (p.velocity[i] - Vec3(state_.shear_rate * p.position[i].y(), 0, 0)).norm());
+    dt_ = overdamped_time_step(ts, params_.contact, state_.shear_rate, last_speed, a_min_, state_.last_dt,
+                               sums_.mean_compliance());
+  }
 
   if (sums_.max_overlap > params_.max_overlap * a_min_) {
     std::ostringstream s;

@@ -8,6 +8,7 @@
 #pragma once
 #include <omp.h>
 
+#include <cmath>
 #include <vector>
 
 #include "core/box.hpp"
@@ -31,6 +32,11 @@ struct PairSums {
   double max_overlap = 0.0;         // largest -gap over all pairs
   std::uint32_t max_overlap_i = 0, max_overlap_j = 0;
   std::size_t contacts = 0;  // pairs with gap < 0
+  // Sum over pairs with an elastic contact (PairForce::normal_stiffness > 0) of their compliance length
+  // F_n / (dF_n/d delta) (the overlap for linear springs, 2/3 of the compression for Hertz), and their count.
+  double compliance_sum = 0.0;
+  std::size_t elastic_contacts = 0;
+  double mean_compliance() const { return elastic_contacts ? compliance_sum / static_cast<double>(elastic_contacts) : 0.0; }
 };
 
 // Tangent stiffnesses of a pair's contact law at this step (PairForce::normal_stiffness, tangential_stiffness),
@@ -75,8 +81,8 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
     // Scalars and the virial are summed on the thread's stack and stored once: the PairSums of neighbouring
     // threads are adjacent in `local`, and writing them per pair would bounce cache lines between cores.
     StressTensors virial;
-    std::size_t contacts = 0;
-    double max_overlap = 0.0;
+    std::size_t contacts = 0, elastic = 0;
+    double max_overlap = 0.0, compliance = 0.0;
     std::uint32_t max_i = 0, max_j = 0;
     const std::size_t np = active.size();
     const std::size_t begin = np * t / nthreads, end = np * (t + 1) / nthreads;
@@ -88,6 +94,10 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
       const Vec3 fj = f.total_on_j();
       pair_force[k] = fj;
       if (pair_stiffness) pair_stiffness[k] = {f.normal_stiffness, f.tangential_stiffness};
+      if (f.normal_stiffness > 0.0) {
+        compliance += std::abs(f[Contribution::contact_normal].dot(pr.geometry.n)) / f.normal_stiffness;
+        ++elastic;
+      }
       force[pr.j] += fj;
       force[pr.i] -= fj;
       torque[pr.i] += f.torque_i;
@@ -104,6 +114,8 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
     }
     mine.virial = virial;
     mine.contacts = contacts;
+    mine.compliance_sum = compliance;
+    mine.elastic_contacts = elastic;
     mine.max_overlap = max_overlap;
     mine.max_overlap_i = max_i;
     mine.max_overlap_j = max_j;
@@ -123,9 +135,13 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
   sums.virial.clear();
   sums.max_overlap = 0.0;
   sums.contacts = 0;
+  sums.compliance_sum = 0.0;
+  sums.elastic_contacts = 0;
   for (const PairSums& l : local) {
     for (std::size_t c = 0; c < contribution_count; ++c) sums.virial.part[c] += l.virial.part[c];
     sums.contacts += l.contacts;
+    sums.compliance_sum += l.compliance_sum;
+    sums.elastic_contacts += l.elastic_contacts;
     if (l.max_overlap > sums.max_overlap) {
       sums.max_overlap = l.max_overlap;
       sums.max_overlap_i = l.max_overlap_i;

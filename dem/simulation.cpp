@@ -257,17 +257,18 @@ void PairwiseSimulation::evaluate() {
       p.velocity[i] = Vec3(v[0], v[1], v[2]);
       p.angular_velocity[i] = Vec3(v[3], v[4], v[5]);
     }
-  // Implicit contacts: the step precedes the solve (time_step_control.hpp), from the last step's speeds.
+  // Contacts see the image velocity of the last step's rate (their velocities are that step's).
+  contact_forces(state_.shear_rate * box_.length().y());
+  // Implicit contacts: the step precedes the solve (time_step_control.hpp), from the last step's speeds and this
+  // step's contacts.
   if (params_.time_step.implicit_contacts) {
     const hydro::WavyShear f = flow(state_.shear_rate);
     double last_speed = 0.0;
     for (std::size_t i = 0; i < n; ++i)
       last_speed = std::max(last_speed, (p.velocity[i] - f.velocity(p.position[i])).norm());
     dt_ = overdamped_time_step(params_.time_step, params_.contact, state_.shear_rate, last_speed, a_min_,
-                               state_.last_dt);
+                               state_.last_dt, sums_.mean_compliance());
   }
-  // Contacts see the image velocity of the last step's rate (their velocities are that step's).
-  contact_forces(state_.shear_rate * box_.length().y());
   rate_ = params_.control == FlowControl::rate ? params_.shear_rate : state_.shear_rate;
   const double max_speed = inertial ? inertial_velocities() : overdamped_velocities();
   if (!std::isfinite(rate_)) fail("the stress control gave a non-finite shear rate");

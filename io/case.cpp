@@ -184,6 +184,8 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     ts.stability = t.number("stability", ts.stability, Range::open_closed(0.0, 1.0));
     ts.implicit_contacts = t.choice("contacts", "explicit", {"explicit", "implicit"}) == "implicit";
     ts.growth = t.number("growth", ts.growth, Range::open_closed(1.0, 10.0));
+    ts.displacement_per_compliance =
+        t.number("displacement_per_compliance", ts.displacement_per_compliance, Range::positive());
     t.finish();
 
     SchemaReader o = r.child("output");
@@ -296,6 +298,7 @@ YAML::Node to_yaml(const Case& c) {
   r["time_step"]["stability"] = number_node(ts.stability);
   r["time_step"]["contacts"] = ts.implicit_contacts ? "implicit" : "explicit";
   r["time_step"]["growth"] = number_node(ts.growth);
+  r["time_step"]["displacement_per_compliance"] = number_node(ts.displacement_per_compliance);
   r["output"]["series_every"] = number_node(c.run.output.series_every);
   r["output"]["snapshot_every"] = number_node(c.run.output.snapshot_every);
   r["output"]["checkpoint_every"] = number_node(c.run.output.checkpoint_every);
