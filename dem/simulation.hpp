@@ -32,6 +32,7 @@
 #include "core/stress.hpp"
 #include "dem/contact/contact_law.hpp"
 #include "dem/contact_history.hpp"
+#include "dem/integrate/explicit_hydrodynamics.hpp"
 #include "dem/integrate/resistance_solver.hpp"
 #include "dem/pair_forces.hpp"
 #include "dem/verlet_list.hpp"
@@ -138,6 +139,8 @@ class PairwiseSimulation {
   std::vector<int> species_;            // index into species_radius_ per particle
   std::optional<ResistanceSolver> solver_;
   std::optional<ResistanceSolver> force_solver_;  // stress control: the force-driven problem (own warm start)
+  std::optional<ExplicitHydrodynamics> explicit_;  // inertial with lubrication: matrix-free explicit forces
+  ExplicitHydroResult explicit_out_;
   SolveResult solve_, force_solve_;
   Eigen::VectorXd disturbance_, hydro_force_;
   std::vector<Vec3> zero_;
