@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "core/capacity.hpp"
 #include "core/error.hpp"
 #include "dem/hydro/stokes_drag.hpp"
 
@@ -55,7 +56,7 @@ PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, co
   state_.contacts.clear();
   if (params_.control == FlowControl::rate || state_.shear_rate == 0.0) state_.shear_rate = params_.shear_rate;
   rate_ = state_.shear_rate;
-  zero_.assign(n, Vec3::Zero());
+  if (params_.control == FlowControl::stress) zero_.assign(n, Vec3::Zero());  // the force-free problem's input
   // Lubrication is tabulated per pair of distinct radii.
   species_radius_ = p.radius;
   std::sort(species_radius_.begin(), species_radius_.end());
@@ -127,9 +128,9 @@ void PairwiseSimulation::contact_forces(double image_velocity) {
   Particles& p = state_.particles;
   list_.update(p.position, p.radius, box_);
   compact_active_pairs(list_.pairs(), p, box_, range_, active_);
-  active_index_.resize(active_.size());
+  resize_with_headroom(active_index_, active_.size());
   for (std::size_t k = 0; k < active_.size(); ++k) active_index_[k] = {active_[k].i, active_[k].j};
-  pair_history_.resize(active_.size());
+  resize_with_headroom(pair_history_, active_.size());
   history_.gather(active_index_, pair_history_);
   with_law(params_.contact, [&](const auto& law) {
     accumulate_pair_forces(active_, p, image_velocity, law, state_.last_dt, pair_history_, sums_, pair_force_,

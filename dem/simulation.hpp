@@ -10,6 +10,7 @@
 // scheme of paper 000 eq. 15 with the hydrodynamic forces explicit at the half-step velocities:
 //   x^{n+1} = x^n + dt u^{n+1/2},  u^{n+1/2} = u^n + (dt/2) a^n,  a^{n+1} = F(x^{n+1}, u^{n+1/2}) / m,
 //   u^{n+1} = u^{n+1/2} + (dt/2) a^{n+1};   m = St (4/3) pi a^3, moment of inertia (2/5) m a^2.
+// With lubrication the explicit forces are evaluated matrix-free (dem/integrate/explicit_hydrodynamics.hpp).
 // Flow control: an imposed shear rate, or an imposed shear stress: with zero inertia velocities and stress are
 // linear in (gammadot, F_contact), Sigma_xy = gammadot Sigma_H + Sigma_C, so each step solves the rate-driven and the
 // force-driven problems and picks gammadot = (target - Sigma_C) / Sigma_H. Lees-Edwards follows the accumulated strain.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/capacity.hpp"
 #include "core/error.hpp"
 #include "dem/hydro/stokes_drag.hpp"
 
@@ -41,8 +42,7 @@ void ExplicitHydrodynamics::build_incidence(std::size_t n, const std::vector<int
       ends += 2;
     }
   for (std::size_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
-  if (ends > incident_.capacity()) incident_.reserve(ends + ends / 16);  // small headroom, not doubling
-  incident_.resize(ends);
+  resize_with_headroom(incident_, ends);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const ActivePair& pr = pairs[k];
     if (!law(species[pr.i], species[pr.j]).active(pr.geometry.gap())) continue;
