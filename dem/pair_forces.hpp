@@ -125,8 +125,14 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
     // every particle split; a particle outside a thread's range gets no term, where an exact zero was added).
     if (nthreads > 1) {
 #pragma omp barrier
+      std::size_t first = n_particles, last = 0;  // the particles any other thread touched
+      for (int u = 1; u < nthreads; ++u)
+        if (!local[u].force.empty()) {
+          first = std::min(first, local[u].offset);
+          last = std::max(last, local[u].offset + local[u].force.size());
+        }
 #pragma omp for schedule(static)
-      for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(n_particles); ++i) {
+      for (std::ptrdiff_t i = static_cast<std::ptrdiff_t>(first); i < static_cast<std::ptrdiff_t>(last); ++i) {
         Vec3 f = sums.force[i], tq = sums.torque[i];
         for (int u = 1; u < nthreads; ++u) {
           const PairSums& l = local[u];
