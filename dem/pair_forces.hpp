@@ -84,8 +84,10 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
       const std::size_t span = begin < end ? std::size_t{hi} - lo + 1 : 0;
       offset = lo;
       mine.offset = lo;
-      mine.force.assign(span, Vec3::Zero());
-      mine.torque.assign(span, Vec3::Zero());
+      resize_with_headroom(mine.force, span);  // the span changes a little from call to call
+      resize_with_headroom(mine.torque, span);
+      std::fill(mine.force.begin(), mine.force.end(), Vec3::Zero());
+      std::fill(mine.torque.begin(), mine.torque.end(), Vec3::Zero());
       force = mine.force.data();
       torque = mine.torque.data();
     }
