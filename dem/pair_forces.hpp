@@ -133,7 +133,7 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
           first = std::min(first, local[u].offset);
           last = std::max(last, local[u].offset + local[u].force.size());
         }
-#pragma omp for schedule(static)
+#pragma omp for schedule(static) nowait  // the end of the parallel region is the barrier
       for (std::ptrdiff_t i = static_cast<std::ptrdiff_t>(first); i < static_cast<std::ptrdiff_t>(last); ++i) {
         Vec3 f = sums.force[i], tq = sums.torque[i];
         for (int u = 1; u < nthreads; ++u) {
