@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "core/capacity.hpp"
 #include "core/error.hpp"
 #include "dem/hydro/stokes_drag.hpp"
 
@@ -54,7 +55,7 @@ PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, co
   state_.contacts.clear();
   if (params_.control == FlowControl::rate || state_.shear_rate == 0.0) state_.shear_rate = params_.shear_rate;
   rate_ = state_.shear_rate;
-  zero_.assign(n, Vec3::Zero());
+  if (params_.control == FlowControl::stress) zero_.assign(n, Vec3::Zero());  // the force-free problem's input
   // Lubrication is tabulated per pair of distinct radii.
   species_radius_ = p.radius;
   std::sort(species_radius_.begin(), species_radius_.end());
@@ -63,7 +64,11 @@ PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, co
   for (std::size_t i = 0; i < n; ++i)
     species_[i] = static_cast<int>(std::lower_bound(species_radius_.begin(), species_radius_.end(), p.radius[i]) -
                                    species_radius_.begin());
-  if (params_.lubrication) {
+  if (params_.lubrication && params_.integrator == Integrator::inertial) {
+    // Explicit forces (paper 000 eq. 15): no resistance matrix, no warm start.
+    explicit_.emplace(species_radius_, params_.resistance.lubrication, params_.resistance.lubrication_stress);
+    state_.warm_start.clear();
+  } else if (params_.lubrication) {
     solver_.emplace(species_radius_, params_.resistance);
     if (params_.control == FlowControl::stress) force_solver_.emplace(species_radius_, params_.resistance);
     const std::size_t w = state_.warm_start.size();
@@ -122,9 +127,9 @@ void PairwiseSimulation::contact_forces(double image_velocity) {
   Particles& p = state_.particles;
   list_.update(p.position, p.radius, box_);
   compact_active_pairs(list_.pairs(), p, box_, range_, active_);
-  active_index_.resize(active_.size());
+  resize_with_headroom(active_index_, active_.size());
   for (std::size_t k = 0; k < active_.size(); ++k) active_index_[k] = {active_[k].i, active_[k].j};
-  pair_history_.resize(active_.size());
+  resize_with_headroom(pair_history_, active_.size());
   history_.gather(active_index_, pair_history_);
   std::vector<ContactStiffness>* stiffness = params_.time_step.implicit_contacts ? &stiffness_ : nullptr;
   with_law(params_.contact, [&](const auto& law) {
@@ -200,9 +205,11 @@ double PairwiseSimulation::inertial_velocities() {
       disturbance_[6 * i + k] = v[12 * i + k] - f.velocity(p.position[i])[k];
       disturbance_[6 * i + 3 + k] = v[12 * i + 3 + k] - f.angular_velocity(p.position[i])[k];
     }
-  if (solver_) {
-    solver_->explicit_forces(p, species_, active_, f, disturbance_, hydro_force_, solve_);
-    relaxation_rate_ = solver_->relaxation_rate(mass_, moment_);
+  if (explicit_) {
+    explicit_->evaluate(p, species_, active_, f, disturbance_, mass_, moment_, explicit_out_);
+    relaxation_rate_ = explicit_out_.relaxation_rate;
+    solve_.stress = explicit_out_.stress;
+    solve_.iterations = 0;
   } else {
     hydro_force_.resize(6 * static_cast<Eigen::Index>(n));
     relaxation_rate_ = 0.0;
@@ -215,12 +222,13 @@ double PairwiseSimulation::inertial_velocities() {
       relaxation_rate_ = std::max({relaxation_rate_, r.translation / mass_[i], r.rotation / moment_[i]});
     }
   }
+  const Eigen::VectorXd& hydro_force = explicit_ ? explicit_out_.force : hydro_force_;
   acceleration_.resize(6 * n);
   double max_speed = 0.0;
   const double half = 0.5 * state_.last_dt;
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 a_lin = (sums_.force[i] + hydro_force_.segment<3>(6 * i)) / mass_[i];
-    const Vec3 a_ang = (sums_.torque[i] + hydro_force_.segment<3>(6 * i + 3)) / moment_[i];
+    const Vec3 a_lin = (sums_.force[i] + hydro_force.segment<3>(6 * i)) / mass_[i];
+    const Vec3 a_ang = (sums_.torque[i] + hydro_force.segment<3>(6 * i + 3)) / moment_[i];
     for (int k = 0; k < 3; ++k) acceleration_[6 * i + k] = a_lin[k], acceleration_[6 * i + 3 + k] = a_ang[k];
     p.velocity[i] = Vec3(v[12 * i], v[12 * i + 1], v[12 * i + 2]) + half * a_lin;          // eq. 15d
     p.angular_velocity[i] = Vec3(v[12 * i + 3], v[12 * i + 4], v[12 * i + 5]) + half * a_ang;
@@ -232,7 +240,7 @@ double PairwiseSimulation::inertial_velocities() {
 void PairwiseSimulation::finish_stress(double rate) {
   const Particles& p = state_.particles;
   stress_ = sums_.virial;
-  if (solver_) {
+  if (params_.lubrication) {
     // Hydrodynamic and lubrication sums; with implicit contacts also the contacts' change over the step.
     for (std::size_t c = 0; c < contribution_count; ++c) stress_.part[c] += solve_.stress.part[c];
     for (std::size_t k = 0; k < solve_.contact_change_on_j.size(); ++k) pair_force_[k] += solve_.contact_change_on_j[k];

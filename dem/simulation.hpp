@@ -10,6 +10,7 @@
 // scheme of paper 000 eq. 15 with the hydrodynamic forces explicit at the half-step velocities:
 //   x^{n+1} = x^n + dt u^{n+1/2},  u^{n+1/2} = u^n + (dt/2) a^n,  a^{n+1} = F(x^{n+1}, u^{n+1/2}) / m,
 //   u^{n+1} = u^{n+1/2} + (dt/2) a^{n+1};   m = St (4/3) pi a^3, moment of inertia (2/5) m a^2.
+// With lubrication the explicit forces are evaluated matrix-free (dem/integrate/explicit_hydrodynamics.hpp).
 // Flow control: an imposed shear rate, or an imposed shear stress: with zero inertia velocities and stress are
 // linear in (gammadot, F_contact), Sigma_xy = gammadot Sigma_H + Sigma_C, so each step solves the rate-driven and the
 // force-driven problems and picks gammadot = (target - Sigma_C) / Sigma_H. Lees-Edwards follows the accumulated strain.
@@ -33,6 +34,7 @@
 #include "core/stress.hpp"
 #include "dem/contact/contact_law.hpp"
 #include "dem/contact_history.hpp"
+#include "dem/integrate/explicit_hydrodynamics.hpp"
 #include "dem/integrate/resistance_solver.hpp"
 #include "dem/integrate/time_step_control.hpp"
 #include "dem/pair_forces.hpp"
@@ -133,6 +135,8 @@ class PairwiseSimulation {
   std::vector<int> species_;            // index into species_radius_ per particle
   std::optional<ResistanceSolver> solver_;
   std::optional<ResistanceSolver> force_solver_;  // stress control: the force-driven problem (own warm start)
+  std::optional<ExplicitHydrodynamics> explicit_;  // inertial with lubrication: matrix-free explicit forces
+  ExplicitHydroResult explicit_out_;
   SolveResult solve_, force_solve_;
   Eigen::VectorXd disturbance_, hydro_force_;
   std::vector<Vec3> zero_;
