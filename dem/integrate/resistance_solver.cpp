@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/capacity.hpp"
 #include "core/error.hpp"
 #include "dem/hydro/stokes_drag.hpp"
 
@@ -45,13 +46,15 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
   links_.clear();
   link_pair_.clear();
   lubricated_ = 0;
-  pair_link_.resize(pairs.size());
+  resize_with_headroom(pair_link_, pairs.size());
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const ActivePair& pr = pairs[k];
     const bool active = law(species[pr.i], species[pr.j]).active(pr.geometry.gap());
     lubricated_ += active ? 1 : 0;
     if (active || keep_inactive || stiff(implicit, k)) {
       pair_link_[k] = static_cast<std::int32_t>(links_.size());
+      reserve_one_more(links_);
+      reserve_one_more(link_pair_);
       links_.push_back({pr.i, pr.j});
       link_pair_.push_back(static_cast<std::uint32_t>(k));
     } else {
@@ -60,9 +63,9 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
   }
   matrix_.set_structure(n, links_);
   const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(links_.size());
-  self_i_.resize(nl);
-  self_j_.resize(nl);
-  strain_.resize(nl);
+  resize_with_headroom(self_i_, nl);
+  resize_with_headroom(self_j_, nl);
+  resize_with_headroom(strain_, nl);
 
   // Pair blocks (R_lub is zero beyond the outer cutoff): each link writes only its own slots.
 #pragma omp parallel for schedule(static) if (nl > 256)
@@ -215,7 +218,7 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
                                          const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
                                          SolveResult& out, const ImplicitContacts& implicit) {
   const std::ptrdiff_t np = static_cast<std::ptrdiff_t>(pairs.size());
-  out.lubrication_force_on_j.resize(np);
+  resize_with_headroom(out.lubrication_force_on_j, np);
   if (implicit.enabled())
     out.contact_change_on_j.assign(np, Vec3::Zero());
   else
