@@ -43,11 +43,7 @@ FcmSimulation::FcmSimulation(SimulationState state, const Box& box, const Simula
   box_.set_strain(state_.strain);
   const Particles& p = state_.particles;
   if (p.size() == 0) throw InputError("fcm: no particles");
-  const auto [a_min, a_max] = std::minmax_element(p.radius.begin(), p.radius.end());
-  a_min_ = *a_min;
-  history_ = ContactHistory(p.size(), ContactHistory::capacity_for(*a_min, *a_max));
-  history_.restore(state_.contacts);
-  state_.contacts.clear();
+  a_min_ = *std::min_element(p.radius.begin(), p.radius.end());
   species_radius_ = p.radius;
   std::sort(species_radius_.begin(), species_radius_.end());
   species_radius_.erase(std::unique(species_radius_.begin(), species_radius_.end()), species_radius_.end());
@@ -82,8 +78,9 @@ FcmSimulation::FcmSimulation(SimulationState state, const Box& box, const Simula
     throw InputError("hydrodynamics.model = fcm needs flow.type = simple_shear");
   if (params_.control == FlowControl::rate || state_.shear_rate == 0.0) state_.shear_rate = params_.shear_rate;
   rate_ = state_.shear_rate;
-  range_ = std::max(interaction_range(params_.contact), subgrid_ ? subgrid_->range() : 0.0);
-  list_ = VerletList(range_, params_.skin);
+  contacts_ = ContactStage(std::max(interaction_range(params_.contact), subgrid_ ? subgrid_->range() : 0.0),
+                           params_.skin, p, state_.contacts);
+  state_.contacts.clear();
   if (state_.warm_start.size() == 11 * p.size() || state_.warm_start.size() == 22 * p.size())
     mobility_->set_warm_start_state(state_.warm_start);
   state_.warm_start.clear();
@@ -91,7 +88,7 @@ FcmSimulation::FcmSimulation(SimulationState state, const Box& box, const Simula
 
 SimulationState FcmSimulation::state_with_contacts() const {
   SimulationState s = state_;
-  s.contacts = history_.entries();
+  s.contacts = contacts_.histories();
   s.warm_start = mobility_->warm_start_state();
   return s;
 }
@@ -107,42 +104,25 @@ void FcmSimulation::evaluate() {
   const std::size_t n = p.size();
   const TimeStepParams& ts = params_.time_step;
   double t0 = omp_get_wtime();
-  list_.update(p.position, p.radius, box_);
-  compact_active_pairs(list_.pairs(), p, box_, range_, active_);
-  active_index_.resize(active_.size());
-  for (std::size_t k = 0; k < active_.size(); ++k) active_index_[k] = {active_[k].i, active_[k].j};
-  pair_history_.resize(active_.size());
-  history_.gather(active_index_, pair_history_);
   // Contacts see the image velocity of the last step's rate (their velocities are that step's).
-  const double image_velocity = state_.shear_rate * box_.length().y();
-  std::vector<ContactStiffness>* stiffness = ts.implicit_contacts ? &stiffness_ : nullptr;
-  with_law(params_.contact, [&](const auto& law) {
-    accumulate_pair_forces(active_, p, image_velocity, law, state_.last_dt, pair_history_, sums_, pair_force_,
-                           scratch_, stiffness);
-  });
+  const auto overlap = contacts_.evaluate(p, box_, state_.shear_rate * box_.length().y(), params_.contact,
+                                          state_.last_dt, ts.implicit_contacts, params_.max_overlap * a_min_);
   contact_seconds_ += omp_get_wtime() - t0;
+  if (overlap) fail(*overlap);
+  const PairSums& sums = contacts_.sums();
+  const std::vector<ActivePair>& pairs = contacts_.pairs();
   // Implicit contacts: the step precedes the solve (time_step_control.hpp), from the last step's speeds and this
   // step's contacts.
-  if (ts.implicit_contacts) {
-    double last_speed = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      last_speed = std::max(last_speed, (p.velocity[i] - Vec3(state_.shear_rate * p.position[i].y(), 0, 0)).norm());
-    dt_ = overdamped_time_step(ts, params_.contact, state_.shear_rate, last_speed, a_min_, state_.last_dt,
-                               sums_.mean_compliance());
-  }
-
-  if (sums_.max_overlap > params_.max_overlap * a_min_) {
-    std::ostringstream s;
-    s << "overlap " << sums_.max_overlap << " a_1 between particles " << sums_.max_overlap_i << " and "
-      << sums_.max_overlap_j << " exceeds the bound " << params_.max_overlap * a_min_
-      << " (run.max_overlap x smallest radius); reduce the time step or stiffen the contacts";
-    fail(s.str());
-  }
+  if (ts.implicit_contacts)
+    dt_ = overdamped_time_step(ts, params_.contact, state_.shear_rate,
+                               max_nonaffine_speed(p, hydro::WavyShear{state_.shear_rate, 0.0, 0, box_.length().y()}),
+                               a_min_, state_.last_dt, sums.mean_compliance());
 
   t0 = omp_get_wtime();
   if (subgrid_) {
-    subgrid_->assemble(active_, species_);
-    if (ts.implicit_contacts) subgrid_->add_contact_steps(active_, stiffness_, dt_, p.position, box_.length().y());
+    subgrid_->assemble(pairs, species_);
+    if (ts.implicit_contacts)
+      subgrid_->add_contact_steps(pairs, contacts_.stiffness(), dt_, p.position, box_.length().y());
   }
   subgrid_seconds_ += omp_get_wtime() - t0;
   solve_velocities();
@@ -155,15 +135,16 @@ void FcmSimulation::evaluate() {
   for (std::size_t i = 0; i < n; ++i)
     if (!p.velocity[i].allFinite() || !p.angular_velocity[i].allFinite()) {
       std::ostringstream s;
-      s << "non-finite velocity of particle " << i << " (contact force " << sums_.force[i].transpose() << ")";
+      s << "non-finite velocity of particle " << i << " (contact force " << sums.force[i].transpose() << ")";
       fail(s.str());
     }
 
   const double volume = box_.volume();
-  stress_ = sums_.virial;
+  stress_ = sums.virial;
+  std::vector<Vec3>& pair_force = contacts_.pair_forces();
   for (std::size_t k = 0; k < result_.contact_change_on_j.size(); ++k) {
-    add_contact_change_virial(active_[k].geometry, result_.contact_change_on_j[k], stress_);
-    pair_force_[k] += result_.contact_change_on_j[k];
+    add_contact_change_virial(pairs[k].geometry, result_.contact_change_on_j[k], stress_);
+    pair_force[k] += result_.contact_change_on_j[k];
   }
   for (auto& m : stress_.part) m /= volume;
   fcm::MobilityResult fcm_part;
@@ -180,7 +161,7 @@ double FcmSimulation::hydrodynamic_shear_stress(const coupling::CoupledResult& r
   fcm_part.stresslets = r.stresslets;
   StressTensors changes;
   for (std::size_t k = 0; k < r.contact_change_on_j.size(); ++k)
-    add_contact_change_virial(active_[k].geometry, r.contact_change_on_j[k], changes);
+    add_contact_change_virial(contacts_.pairs()[k].geometry, r.contact_change_on_j[k], changes);
   return mobility_->solver().bulk_stress(fcm_part, rate)(0, 1) * box_.volume() + r.subgrid_stress(0, 1) +
          changes.total()(0, 1);
 }
@@ -188,7 +169,8 @@ double FcmSimulation::hydrodynamic_shear_stress(const coupling::CoupledResult& r
 void FcmSimulation::solve_velocities() {
   const Particles& p = state_.particles;
   const std::size_t n = p.size();
-  coupling::CoupledProblem pb{p.position, p.radius, sums_.force, sums_.torque, rate_, box_.shear_offset()};
+  const PairSums& sums = contacts_.sums();
+  coupling::CoupledProblem pb{p.position, p.radius, sums.force, sums.torque, rate_, box_.shear_offset()};
   try {
     if (params_.control == FlowControl::rate) {
       pb.shear_rate = rate_ = params_.shear_rate;
@@ -201,7 +183,7 @@ void FcmSimulation::solve_velocities() {
   }
   // Sigma_xy V = gammadot (shear part, which includes 2 E_inf V) + force part + the contacts' virial.
   const double sigma_h = hydrodynamic_shear_stress(result_, 1.0);
-  const double sigma_c = hydrodynamic_shear_stress(force_result_, 0.0) + sums_.virial.total()(0, 1);
+  const double sigma_c = hydrodynamic_shear_stress(force_result_, 0.0) + sums.virial.total()(0, 1);
   rate_ = (params_.shear_stress * box_.volume() - sigma_c) / sigma_h;
   if (!std::isfinite(rate_)) fail("the stress control gave a non-finite shear rate");
   for (std::size_t i = 0; i < n; ++i) {
@@ -219,7 +201,7 @@ void FcmSimulation::solve_velocities() {
 
 void FcmSimulation::advance() {
   if (!evaluated_) evaluate();
-  history_.scatter(active_index_, pair_history_);
+  contacts_.store_histories();
   Particles& p = state_.particles;
   const std::size_t n = p.size();
   nonaffine_.resize(n);
@@ -239,7 +221,7 @@ void FcmSimulation::advance() {
     const int crossings = box_.wrap(p.position[i]);
     p.velocity[i].x() -= crossings * rate_ * ly;  // paper 000, eq. 16d
   }
-  list_.record_motion(nonaffine_, std::abs(dstrain));
+  contacts_.record_motion(nonaffine_, std::abs(dstrain));
   evaluated_ = false;
 }
 

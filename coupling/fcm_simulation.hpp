@@ -26,7 +26,7 @@
 #include "core/stress.hpp"
 #include "coupling/coupled_mobility.hpp"
 #include "coupling/subgrid_lubrication.hpp"
-#include "dem/contact_history.hpp"
+#include "dem/contact_stage.hpp"
 #include "dem/pair_forces.hpp"
 #include "dem/simulation.hpp"
 #include "dem/verlet_list.hpp"
@@ -65,12 +65,12 @@ class FcmSimulation {
   double shear_rate() const { return rate_; }
   double time_step() const { return dt_; }
   const StressTensors& stress() const { return stress_; }
-  double max_overlap() const { return sums_.max_overlap; }
+  double max_overlap() const { return contacts_.sums().max_overlap; }
   int solver_iterations() const { return result_.iterations; }
-  std::size_t contact_count() const { return sums_.contacts; }
-  const std::vector<ActivePair>& active_pairs() const { return active_; }
-  const VerletList& neighbours() const { return list_; }
-  const std::vector<Vec3>& pair_forces() const { return pair_force_; }
+  std::size_t contact_count() const { return contacts_.sums().contacts; }
+  const std::vector<ActivePair>& active_pairs() const { return contacts_.pairs(); }
+  const VerletList& neighbours() const { return contacts_.neighbours(); }
+  const std::vector<Vec3>& pair_forces() const { return contacts_.pair_forces(); }
 
   // FCM-specific diagnostics.
   const FcmParams& fcm_params() const { return fcm_; }
@@ -95,23 +95,14 @@ class FcmSimulation {
   Box box_;
   SimulationParams params_;
   FcmParams fcm_;
-  double range_ = 0.0;
   double a_min_ = 1.0;
-  VerletList list_;
-  ContactHistory history_;
-  std::vector<ActivePair> active_;
-  std::vector<NeighbourPair> active_index_;
-  std::vector<PairHistory> pair_history_;
-  std::vector<Vec3> pair_force_;
-  std::vector<ContactStiffness> stiffness_;  // implicit contacts: per active pair
+  ContactStage contacts_;
   std::vector<double> species_radius_;
   std::vector<int> species_;
   std::optional<coupling::SubgridLubrication> subgrid_;
   std::optional<coupling::CoupledMobility> mobility_;
   coupling::CoupledResult result_, force_result_;  // stress control: result_ is the rate-driven part first
   double rate_ = 1.0;
-  PairSums sums_;
-  std::vector<PairSums> scratch_;
   std::vector<Vec3> nonaffine_;
   StressTensors stress_;
   double dt_ = 0.0;

@@ -34,6 +34,7 @@
 #include "core/stress.hpp"
 #include "dem/contact/contact_law.hpp"
 #include "dem/contact_history.hpp"
+#include "dem/contact_stage.hpp"
 #include "dem/integrate/explicit_hydrodynamics.hpp"
 #include "dem/integrate/resistance_solver.hpp"
 #include "dem/integrate/time_step_control.hpp"
@@ -98,15 +99,15 @@ class PairwiseSimulation {
   double shear_rate() const { return rate_; }
   double time_step() const { return dt_; }
   const StressTensors& stress() const { return stress_; }
-  double max_overlap() const { return sums_.max_overlap; }
+  double max_overlap() const { return contacts_.sums().max_overlap; }
   // Conjugate-gradient iterations of the step (both problems under stress control) and the larger residual.
   int solver_iterations() const { return solve_.iterations + (force_solver_ ? force_solve_.iterations : 0); }
   double solver_residual() const { return std::max(solve_.residual, force_solver_ ? force_solve_.residual : 0.0); }
-  std::size_t contact_count() const { return sums_.contacts; }
-  const std::vector<ActivePair>& active_pairs() const { return active_; }
-  const VerletList& neighbours() const { return list_; }
+  std::size_t contact_count() const { return contacts_.sums().contacts; }
+  const std::vector<ActivePair>& active_pairs() const { return contacts_.pairs(); }
+  const VerletList& neighbours() const { return contacts_.neighbours(); }
   // Force on j of each active pair (same order as active_pairs()), for snapshots.
-  const std::vector<Vec3>& pair_forces() const { return pair_force_; }
+  const std::vector<Vec3>& pair_forces() const { return contacts_.pair_forces(); }
 
  private:
   hydro::WavyShear flow(double rate) const {
@@ -121,16 +122,9 @@ class PairwiseSimulation {
   SimulationState state_;
   Box box_;
   SimulationParams params_;
-  double range_ = 0.0;         // largest gap at which a pair interacts
   double a_min_ = 1.0;         // smallest radius (overlap bound, time-step bound)
   double radius_cubed_ = 0.0;  // sum of a^3, for the Stokes stresslets of the drag-only model
-  VerletList list_;
-  ContactHistory history_;
-  std::vector<ActivePair> active_;
-  std::vector<NeighbourPair> active_index_;
-  std::vector<PairHistory> pair_history_;
-  std::vector<Vec3> pair_force_;
-  std::vector<ContactStiffness> stiffness_;  // implicit contacts: per active pair
+  ContactStage contacts_;
   std::vector<double> species_radius_;  // distinct radii
   std::vector<int> species_;            // index into species_radius_ per particle
   std::optional<ResistanceSolver> solver_;
@@ -144,8 +138,6 @@ class PairwiseSimulation {
   std::vector<double> acceleration_;  // inertial: a^{n+1}, alpha^{n+1} of the current evaluation (6 per particle)
   double relaxation_rate_ = 0.0;      // inertial: bound on the fastest hydrodynamic relaxation rate
   double rate_ = 1.0;
-  PairSums sums_;
-  std::vector<PairSums> scratch_;
   std::vector<Vec3> nonaffine_;
   StressTensors stress_;
   double dt_ = 0.0;
