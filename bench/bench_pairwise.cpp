@@ -17,6 +17,10 @@
 //  BM_LubricationAssembly/<threads>: the resistance solver's assembly, preconditioner set-up, residual check and
 //    stress for the same configuration, with a warm start that is already the solution (0 CG iterations); items/s =
 //    lubricated pairs/s.
+//  BM_ExplicitHydrodynamics/<0|1>: the inertial integrator's hydrodynamic forces, stress and rate bound at random
+//    disturbance velocities on the same configuration: 0 = assembled (ResistanceSolver::explicit_forces +
+//    relaxation_rate), 1 = matrix-free (ExplicitHydrodynamics, every pair evaluated from both ends); items/s =
+//    lubricated pairs/s.
 // All times are wall-clock (UseRealTime): the CPU time of the main thread says nothing about OpenMP loops.
 // Usage: OMP_WAIT_POLICY=passive build/bin/bench_pairwise [--benchmark_filter=...]
 #include <benchmark/benchmark.h>
@@ -30,6 +34,7 @@
 #include <random>
 
 #include "dem/contact/contact_law.hpp"
+#include "dem/integrate/explicit_hydrodynamics.hpp"
 #include "dem/integrate/resistance_solver.hpp"
 #include "dem/neighbour_search.hpp"
 #include "dem/packing.hpp"
@@ -204,6 +209,40 @@ void BM_LubricationAssembly(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(out.lubricated_pairs));
 }
 
+void BM_ExplicitHydrodynamics(benchmark::State& state) {
+  const Packed& c = packed();
+  const std::size_t n = c.p.size();
+  Eigen::VectorXd dv(6 * static_cast<Eigen::Index>(n));
+  std::mt19937_64 rng(9);
+  std::normal_distribution<double> g;
+  for (Eigen::Index k = 0; k < dv.size(); ++k) dv[k] = g(rng);
+  std::vector<double> mass(n), moment(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    mass[i] = 1e-3 * (4.0 / 3.0) * 3.141592653589793 * std::pow(c.p.radius[i], 3);
+    moment[i] = 0.4 * mass[i] * c.p.radius[i] * c.p.radius[i];
+  }
+  const hydro::SimpleShear flow(1.0);
+  ResistanceSolver assembled(c.species_radius, {});
+  ExplicitHydrodynamics matrix_free(c.species_radius, hydro::LubricationParams{});
+  Eigen::VectorXd force;
+  SolveResult out;
+  ExplicitHydroResult result;
+  double rate = 0.0;
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      assembled.explicit_forces(c.p, c.p.species, c.active, flow, dv, force, out);
+      rate = assembled.relaxation_rate(mass, moment);
+    } else {
+      matrix_free.evaluate(c.p, c.p.species, c.active, flow, dv, mass, moment, result);
+      rate = result.relaxation_rate;
+    }
+    benchmark::DoNotOptimize(rate);
+  }
+  matrix_free.evaluate(c.p, c.p.species, c.active, flow, dv, mass, moment, result);
+  state.counters["lub_pairs"] = static_cast<double>(result.lubricated_pairs);
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(result.lubricated_pairs));
+}
+
 }  // namespace
 
 BENCHMARK(BM_Search)
@@ -216,5 +255,6 @@ BENCHMARK(BM_Search)->Args({2, 65536})->Iterations(1)->UseRealTime()->Unit(bench
 BENCHMARK(BM_ContactForces)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ContactForcesThreadRatio)->Iterations(10)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LubricationAssembly)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ExplicitHydrodynamics)->Arg(0)->Arg(1)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

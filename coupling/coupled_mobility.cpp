@@ -249,6 +249,10 @@ void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgri
     out.stresslets[i] = m;
   }
   out.subgrid_stress = subgrid ? subgrid->stress(x_.head(nv), pb.shear_rate) : Mat3::Zero();
+  if (subgrid)
+    subgrid->contact_changes(x_.head(nv), pb.shear_rate, out.contact_change_on_j);
+  else
+    out.contact_change_on_j.clear();
 }
 
 }  // namespace suspend::coupling

@@ -67,6 +67,7 @@ struct CoupledResult {
   std::vector<Vec3> velocities, angular_velocities;  // lab frame
   std::vector<Mat3> stresslets;                       // FCM rigidity stresslets
   Mat3 subgrid_stress = Mat3::Zero();                 // sum of the sub-grid pair dipoles (not divided by V)
+  std::vector<Vec3> contact_change_on_j;              // implicit contacts: per pair (SubgridLubrication)
   int iterations = 0;                                 // GMRES iterations
   int stokes_solves = 0;                              // iterations + 1 (the initial residual)
   double residual = 0.0;                              // |r| / scale at exit
@@ -97,6 +98,7 @@ class CoupledMobility {
     x_older_.resize(0);
   }
   fcm::Solver& solver() { return solver_; }
+  const fcm::Solver& solver() const { return solver_; }
   const KrylovParams& params() const { return params_; }
   void set_params(const KrylovParams& p) {
     p.validate();

@@ -43,11 +43,7 @@ FcmSimulation::FcmSimulation(SimulationState state, const Box& box, const Simula
   box_.set_strain(state_.strain);
   const Particles& p = state_.particles;
   if (p.size() == 0) throw InputError("fcm: no particles");
-  const auto [a_min, a_max] = std::minmax_element(p.radius.begin(), p.radius.end());
-  a_min_ = *a_min;
-  history_ = ContactHistory(p.size(), ContactHistory::capacity_for(*a_min, *a_max));
-  history_.restore(state_.contacts);
-  state_.contacts.clear();
+  a_min_ = *std::min_element(p.radius.begin(), p.radius.end());
   species_radius_ = p.radius;
   std::sort(species_radius_.begin(), species_radius_.end());
   species_radius_.erase(std::unique(species_radius_.begin(), species_radius_.end()), species_radius_.end());
@@ -74,8 +70,17 @@ FcmSimulation::FcmSimulation(SimulationState state, const Box& box, const Simula
                                              fcm_.subgrid_model_taper_start},
                      params_.resistance.lubrication, tp, fcm_.cache_dir);
   }
-  range_ = std::max(interaction_range(params_.contact), subgrid_ ? subgrid_->range() : 0.0);
-  list_ = VerletList(range_, params_.skin);
+  if (params_.time_step.implicit_contacts && !subgrid_)
+    throw InputError("run.time_step.contacts = implicit needs hydrodynamics.fcm.subgrid = true");
+  if (params_.integrator != Integrator::overdamped)
+    throw InputError("hydrodynamics.model = fcm needs run.integrator = overdamped");
+  if (params_.wave_amplitude != 0.0)
+    throw InputError("hydrodynamics.model = fcm needs flow.type = simple_shear");
+  if (params_.control == FlowControl::rate || state_.shear_rate == 0.0) state_.shear_rate = params_.shear_rate;
+  rate_ = state_.shear_rate;
+  contacts_ = ContactStage(std::max(interaction_range(params_.contact), subgrid_ ? subgrid_->range() : 0.0),
+                           params_.skin, p, state_.contacts);
+  state_.contacts.clear();
   if (state_.warm_start.size() == 11 * p.size() || state_.warm_start.size() == 22 * p.size())
     mobility_->set_warm_start_state(state_.warm_start);
   state_.warm_start.clear();
@@ -83,7 +88,7 @@ FcmSimulation::FcmSimulation(SimulationState state, const Box& box, const Simula
 
 SimulationState FcmSimulation::state_with_contacts() const {
   SimulationState s = state_;
-  s.contacts = history_.entries();
+  s.contacts = contacts_.histories();
   s.warm_start = mobility_->warm_start_state();
   return s;
 }
@@ -97,38 +102,30 @@ void FcmSimulation::fail(const std::string& what) const {
 void FcmSimulation::evaluate() {
   Particles& p = state_.particles;
   const std::size_t n = p.size();
+  const TimeStepParams& ts = params_.time_step;
   double t0 = omp_get_wtime();
-  list_.update(p.position, p.radius, box_);
-  compact_active_pairs(list_.pairs(), p, box_, range_, active_);
-  active_index_.resize(active_.size());
-  for (std::size_t k = 0; k < active_.size(); ++k) active_index_[k] = {active_[k].i, active_[k].j};
-  pair_history_.resize(active_.size());
-  history_.gather(active_index_, pair_history_);
-  const double image_velocity = params_.shear_rate * box_.length().y();
-  with_law(params_.contact, [&](const auto& law) {
-    accumulate_pair_forces(active_, p, image_velocity, law, state_.last_dt, pair_history_, sums_, pair_force_,
-                           scratch_);
-  });
+  // Contacts see the image velocity of the last step's rate (their velocities are that step's).
+  const auto overlap = contacts_.evaluate(p, box_, state_.shear_rate * box_.length().y(), params_.contact,
+                                          state_.last_dt, ts.implicit_contacts, params_.max_overlap * a_min_);
   contact_seconds_ += omp_get_wtime() - t0;
-
-  if (sums_.max_overlap > params_.max_overlap * a_min_) {
-    std::ostringstream s;
-    s << "overlap " << sums_.max_overlap << " a_1 between particles " << sums_.max_overlap_i << " and "
-      << sums_.max_overlap_j << " exceeds the bound " << params_.max_overlap * a_min_
-      << " (run.max_overlap x smallest radius); reduce the time step or stiffen the contacts";
-    fail(s.str());
-  }
+  if (overlap) fail(*overlap);
+  const PairSums& sums = contacts_.sums();
+  const std::vector<ActivePair>& pairs = contacts_.pairs();
+  // Implicit contacts: the step precedes the solve (time_step_control.hpp), from the last step's speeds and this
+  // step's contacts.
+  if (ts.implicit_contacts)
+    dt_ = overdamped_time_step(ts, params_.contact, state_.shear_rate,
+                               max_nonaffine_speed(p, hydro::WavyShear{state_.shear_rate, 0.0, 0, box_.length().y()}),
+                               a_min_, state_.last_dt, sums.mean_compliance());
 
   t0 = omp_get_wtime();
-  if (subgrid_) subgrid_->assemble(active_, species_);
-  subgrid_seconds_ += omp_get_wtime() - t0;
-  const coupling::CoupledProblem pb{p.position, p.radius, sums_.force, sums_.torque, params_.shear_rate,
-                                    box_.shear_offset()};
-  try {
-    mobility_->solve(pb, subgrid_ ? &*subgrid_ : nullptr, result_);
-  } catch (const NumericalError& e) {
-    fail(e.what());
+  if (subgrid_) {
+    subgrid_->assemble(pairs, species_);
+    if (ts.implicit_contacts)
+      subgrid_->add_contact_steps(pairs, contacts_.stiffness(), dt_, p.position, box_.length().y());
   }
+  subgrid_seconds_ += omp_get_wtime() - t0;
+  solve_velocities();
   double max_speed = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     p.velocity[i] = result_.velocities[i];
@@ -138,31 +135,73 @@ void FcmSimulation::evaluate() {
   for (std::size_t i = 0; i < n; ++i)
     if (!p.velocity[i].allFinite() || !p.angular_velocity[i].allFinite()) {
       std::ostringstream s;
-      s << "non-finite velocity of particle " << i << " (contact force " << sums_.force[i].transpose() << ")";
+      s << "non-finite velocity of particle " << i << " (contact force " << sums.force[i].transpose() << ")";
       fail(s.str());
     }
 
   const double volume = box_.volume();
-  stress_ = sums_.virial;
+  stress_ = sums.virial;
+  std::vector<Vec3>& pair_force = contacts_.pair_forces();
+  for (std::size_t k = 0; k < result_.contact_change_on_j.size(); ++k) {
+    add_contact_change_virial(pairs[k].geometry, result_.contact_change_on_j[k], stress_);
+    pair_force[k] += result_.contact_change_on_j[k];
+  }
   for (auto& m : stress_.part) m /= volume;
   fcm::MobilityResult fcm_part;
   fcm_part.stresslets = result_.stresslets;
-  stress_[Contribution::hydrodynamic] = mobility_->solver().bulk_stress(fcm_part, params_.shear_rate);
+  stress_[Contribution::hydrodynamic] = mobility_->solver().bulk_stress(fcm_part, rate_);
   stress_[Contribution::lubrication] = result_.subgrid_stress / volume;
 
-  if (params_.time_step.mode == TimeStepParams::Mode::fixed) {
-    dt_ = params_.time_step.fixed;
-  } else {
-    dt_ = params_.time_step.max;
-    if (max_speed > 0.0) dt_ = std::min(dt_, params_.time_step.max_displacement / max_speed);
-    dt_ = std::min(dt_, params_.time_step.stability * 6.0 * pi * a_min_ / stiffness_scale(params_.contact));
-  }
+  if (!ts.implicit_contacts) dt_ = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt);
   evaluated_ = true;
+}
+
+double FcmSimulation::hydrodynamic_shear_stress(const coupling::CoupledResult& r, double rate) const {
+  fcm::MobilityResult fcm_part;
+  fcm_part.stresslets = r.stresslets;
+  StressTensors changes;
+  for (std::size_t k = 0; k < r.contact_change_on_j.size(); ++k)
+    add_contact_change_virial(contacts_.pairs()[k].geometry, r.contact_change_on_j[k], changes);
+  return mobility_->solver().bulk_stress(fcm_part, rate)(0, 1) * box_.volume() + r.subgrid_stress(0, 1) +
+         changes.total()(0, 1);
+}
+
+void FcmSimulation::solve_velocities() {
+  const Particles& p = state_.particles;
+  const std::size_t n = p.size();
+  const PairSums& sums = contacts_.sums();
+  coupling::CoupledProblem pb{p.position, p.radius, sums.force, sums.torque, rate_, box_.shear_offset()};
+  try {
+    if (params_.control == FlowControl::rate) {
+      pb.shear_rate = rate_ = params_.shear_rate;
+      mobility_->solve(pb, subgrid_ ? &*subgrid_ : nullptr, result_);
+      return;
+    }
+    mobility_->solve_parts(pb, subgrid_ ? &*subgrid_ : nullptr, result_, force_result_);
+  } catch (const NumericalError& e) {
+    fail(e.what());
+  }
+  // Sigma_xy V = gammadot (shear part, which includes 2 E_inf V) + force part + the contacts' virial.
+  const double sigma_h = hydrodynamic_shear_stress(result_, 1.0);
+  const double sigma_c = hydrodynamic_shear_stress(force_result_, 0.0) + sums.virial.total()(0, 1);
+  rate_ = (params_.shear_stress * box_.volume() - sigma_c) / sigma_h;
+  if (!std::isfinite(rate_)) fail("the stress control gave a non-finite shear rate");
+  for (std::size_t i = 0; i < n; ++i) {
+    result_.velocities[i] = rate_ * result_.velocities[i] + force_result_.velocities[i];
+    result_.angular_velocities[i] = rate_ * result_.angular_velocities[i] + force_result_.angular_velocities[i];
+    result_.stresslets[i] = rate_ * result_.stresslets[i] + force_result_.stresslets[i];
+  }
+  result_.subgrid_stress = rate_ * result_.subgrid_stress + force_result_.subgrid_stress;
+  for (std::size_t k = 0; k < result_.contact_change_on_j.size(); ++k)
+    result_.contact_change_on_j[k] = rate_ * result_.contact_change_on_j[k] + force_result_.contact_change_on_j[k];
+  result_.iterations += force_result_.iterations;
+  result_.stokes_solves += force_result_.stokes_solves;
+  result_.residual = std::max(result_.residual, force_result_.residual);
 }
 
 void FcmSimulation::advance() {
   if (!evaluated_) evaluate();
-  history_.scatter(active_index_, pair_history_);
+  contacts_.store_histories();
   Particles& p = state_.particles;
   const std::size_t n = p.size();
   nonaffine_.resize(n);
@@ -171,17 +210,18 @@ void FcmSimulation::advance() {
     nonaffine_[i] = (p.velocity[i] - ambient_velocity(p.position[i])) * dt_;
     p.position[i] += p.velocity[i] * dt_;
   }
-  const double dstrain = params_.shear_rate * dt_;
+  const double dstrain = rate_ * dt_;
   state_.strain += dstrain;
   state_.time += dt_;
   state_.last_dt = dt_;
+  state_.shear_rate = rate_;
   ++state_.step;
   box_.set_strain(state_.strain);
   for (std::size_t i = 0; i < n; ++i) {
     const int crossings = box_.wrap(p.position[i]);
-    p.velocity[i].x() -= crossings * params_.shear_rate * ly;  // paper 000, eq. 16d
+    p.velocity[i].x() -= crossings * rate_ * ly;  // paper 000, eq. 16d
   }
-  list_.record_motion(nonaffine_, dstrain);
+  contacts_.record_motion(nonaffine_, std::abs(dstrain));
   evaluated_ = false;
 }
 

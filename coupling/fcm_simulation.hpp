@@ -4,7 +4,10 @@
 //
 // Force balance per particle (zero inertia): FCM hydrodynamic + sub-grid lubrication + contact = 0, solved for
 // the velocities and the rigidity stresslets together (coupled_mobility.hpp). Contact forces use the velocities of
-// the last step (as in the pairwise engine), so the solve is linear in the unknowns.
+// the last step (as in the pairwise engine), so the solve is linear in the unknowns; with implicit contacts
+// (run.time_step.contacts, dem/integrate/implicit_contacts.hpp) their change over the step enters the sub-grid
+// pair terms. Flow control as in the pairwise engine: imposed rate, or imposed stress from the rate-driven and
+// force-driven parts of the linear problem (CoupledMobility::solve_parts).
 // Bulk stress, units eta_0 gammadot_ref:
 //   hydrodynamic: 2 E_inf + (1/V) sum_i S_i (FCM stresslets; fcm::Solver::bulk_stress)
 //   lubrication:  (1/V) sum over corrected pairs of their force dipoles (subgrid_lubrication.hpp)
@@ -23,7 +26,7 @@
 #include "core/stress.hpp"
 #include "coupling/coupled_mobility.hpp"
 #include "coupling/subgrid_lubrication.hpp"
-#include "dem/contact_history.hpp"
+#include "dem/contact_stage.hpp"
 #include "dem/pair_forces.hpp"
 #include "dem/simulation.hpp"
 #include "dem/verlet_list.hpp"
@@ -58,15 +61,16 @@ class FcmSimulation {
   const SimulationState& state() const { return state_; }
   const Box& box() const { return box_; }
   const SimulationParams& params() const { return params_; }
-  double shear_rate() const { return params_.shear_rate; }
+  // Shear rate of the current step (the imposed one, or the one the stress control chose).
+  double shear_rate() const { return rate_; }
   double time_step() const { return dt_; }
   const StressTensors& stress() const { return stress_; }
-  double max_overlap() const { return sums_.max_overlap; }
+  double max_overlap() const { return contacts_.sums().max_overlap; }
   int solver_iterations() const { return result_.iterations; }
-  std::size_t contact_count() const { return sums_.contacts; }
-  const std::vector<ActivePair>& active_pairs() const { return active_; }
-  const VerletList& neighbours() const { return list_; }
-  const std::vector<Vec3>& pair_forces() const { return pair_force_; }
+  std::size_t contact_count() const { return contacts_.sums().contacts; }
+  const std::vector<ActivePair>& active_pairs() const { return contacts_.pairs(); }
+  const VerletList& neighbours() const { return contacts_.neighbours(); }
+  const std::vector<Vec3>& pair_forces() const { return contacts_.pair_forces(); }
 
   // FCM-specific diagnostics.
   const FcmParams& fcm_params() const { return fcm_; }
@@ -79,28 +83,26 @@ class FcmSimulation {
   double subgrid_assembly_seconds() const { return subgrid_seconds_; }
 
  private:
-  Vec3 ambient_velocity(const Vec3& r) const { return {params_.shear_rate * r.y(), 0.0, 0.0}; }
+  Vec3 ambient_velocity(const Vec3& r) const { return {rate_ * r.y(), 0.0, 0.0}; }
   [[noreturn]] void fail(const std::string& what) const;
+  // The coupled solve for this configuration: imposed rate, or (stress control) the rate-driven and force-driven
+  // parts combined with the rate that gives Sigma_xy = target; sets rate_ and result_.
+  void solve_velocities();
+  // Sigma_xy (times V) of one solution: FCM stresslets, sub-grid dipoles and implicit contact changes.
+  double hydrodynamic_shear_stress(const coupling::CoupledResult& r, double rate) const;
 
   SimulationState state_;
   Box box_;
   SimulationParams params_;
   FcmParams fcm_;
-  double range_ = 0.0;
   double a_min_ = 1.0;
-  VerletList list_;
-  ContactHistory history_;
-  std::vector<ActivePair> active_;
-  std::vector<NeighbourPair> active_index_;
-  std::vector<PairHistory> pair_history_;
-  std::vector<Vec3> pair_force_;
+  ContactStage contacts_;
   std::vector<double> species_radius_;
   std::vector<int> species_;
   std::optional<coupling::SubgridLubrication> subgrid_;
   std::optional<coupling::CoupledMobility> mobility_;
-  coupling::CoupledResult result_;
-  PairSums sums_;
-  std::vector<PairSums> scratch_;
+  coupling::CoupledResult result_, force_result_;  // stress control: result_ is the rate-driven part first
+  double rate_ = 1.0;
   std::vector<Vec3> nonaffine_;
   StressTensors stress_;
   double dt_ = 0.0;

@@ -81,12 +81,18 @@ void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const st
   s_.clear();
   delta_r_.clear();
   delta_strain_.clear();
+  link_pair_.clear();
+  link_contact_.clear();
+  contact_.clear();
+  pair_count_ = pairs.size();
   Mat3 e_hat = Mat3::Zero();
   e_hat(0, 1) = e_hat(1, 0) = 0.5;
-  for (const ActivePair& pr : pairs) {
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const ActivePair& pr = pairs[k];
     const PairGeometry& g = pr.geometry;
     const double s = 2.0 * g.r / (g.a_i + g.a_j);
     if (s >= params_.cutoff) continue;
+    link_pair_.push_back(static_cast<std::uint32_t>(k));
     ResistanceScalars si, sj;
     scalars(species[pr.i], species[pr.j], g.gap(), si, sj);
     links_.push_back({pr.i, pr.j});
@@ -102,7 +108,12 @@ void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const st
 Vector12 SubgridLubrication::pair_forces(std::size_t k, const Eigen::VectorXd& dv, double shear_rate) const {
   Vector12 v;
   v << dv.segment<6>(6 * static_cast<Eigen::Index>(links_[k].i)), dv.segment<6>(6 * static_cast<Eigen::Index>(links_[k].j));
-  return shear_rate * delta_strain_[k] - pair_resistance_product(delta_r_[k], normal_[k], v);
+  Vector12 f = shear_rate * delta_strain_[k] - pair_resistance_product(delta_r_[k], normal_[k], v);
+  if (!link_contact_.empty() && link_contact_[k] >= 0) {  // the implicit contact step's resistance dt C^T S C
+    const ContactStep& c = contact_[link_contact_[k]];
+    f -= c.c.transpose() * (c.s * (c.c * v));
+  }
+  return f;
 }
 
 void SubgridLubrication::add_velocity_forces(const Eigen::VectorXd& dv, Eigen::VectorXd& f) const {
@@ -120,10 +131,52 @@ void SubgridLubrication::add_strain_forces(double shear_rate, Eigen::VectorXd& f
   }
 }
 
+void SubgridLubrication::add_contact_steps(const std::vector<ActivePair>& pairs,
+                                           const std::vector<ContactStiffness>& stiffness, double dt,
+                                           const std::vector<Vec3>& positions, double ly) {
+  if (pairs.size() != pair_count_ || stiffness.size() != pairs.size())
+    throw InputError("sub-grid lubrication: contact stiffnesses must match the assembled pair list");
+  const hydro::WavyShear unit_shear{1.0, 0.0, 0, ly};
+  link_contact_.assign(links_.size(), -1);
+  contact_.clear();
+  std::size_t stiff = 0;
+  for (std::size_t l = 0; l < links_.size(); ++l) {
+    const std::size_t k = link_pair_[l];
+    if (!stiffness[k].any()) continue;
+    const ContactStep c = contact_step(pairs[k].geometry, positions[pairs[k].i], stiffness[k], dt, unit_shear);
+    // (Its resistance is applied from `contact_` in pair_forces and resistance_matrix: delta_r_ holds the
+    // lubrication blocks' coefficients only.)
+    delta_strain_[l] += c.ambient_force();
+    link_contact_[l] = static_cast<std::int32_t>(contact_.size());
+    contact_.push_back(c);
+  }
+  for (const ContactStiffness& k : stiffness) stiff += k.any() ? 1 : 0;
+  if (stiff != contact_.size())
+    throw InputError("sub-grid lubrication: a contact pair lies beyond the correction cutoff fcm.subgrid_cutoff");
+}
+
+void SubgridLubrication::contact_changes(const Eigen::VectorXd& dv, double shear_rate,
+                                         std::vector<Vec3>& change_on_j) const {
+  change_on_j.clear();
+  if (contact_.empty()) return;
+  change_on_j.assign(pair_count_, Vec3::Zero());
+  for (std::size_t l = 0; l < links_.size(); ++l)
+    if (link_contact_[l] >= 0) change_on_j[link_pair_[l]] = contact_change(l, dv, shear_rate);
+}
+
+Vec3 SubgridLubrication::contact_change(std::size_t l, const Eigen::VectorXd& dv, double shear_rate) const {
+  const ContactStep& c = contact_[link_contact_[l]];
+  Vector12 v;
+  v << dv.segment<6>(6 * static_cast<Eigen::Index>(links_[l].i)), dv.segment<6>(6 * static_cast<Eigen::Index>(links_[l].j));
+  return -(c.s * (shear_rate * c.u_inf + c.c * v));
+}
+
 Mat3 SubgridLubrication::stress(const Eigen::VectorXd& dv, double shear_rate) const {
   Mat3 sum = Mat3::Zero();
   for (std::size_t k = 0; k < links_.size(); ++k) {
-    const Vector12 fk = pair_forces(k, dv, shear_rate);
+    Vector12 fk = pair_forces(k, dv, shear_rate);
+    if (!link_contact_.empty() && link_contact_[k] >= 0)  // the contact step is not lubrication
+      fk -= contact_[link_contact_[k]].c.transpose() * contact_change(k, dv, shear_rate);
     const Vec3& n = normal_[k];
     const Mat3 dip = -lever_i_[k] * n * fk.segment<3>(0).transpose() + lever_j_[k] * n * fk.segment<3>(6).transpose();
     sum -= 0.5 * (dip + dip.transpose());
@@ -147,7 +200,8 @@ void SubgridLubrication::resistance_matrix(const std::vector<double>& radius, do
   std::size_t c = 0;
   for (std::size_t k = 0; k < links_.size(); ++k) {
     if (!(s_[k] < s_max)) continue;
-    const Matrix12 r = pair_resistance(delta_r_[k], normal_[k]);
+    Matrix12 r = pair_resistance(delta_r_[k], normal_[k]);
+    if (!link_contact_.empty() && link_contact_[k] >= 0) r += contact_[link_contact_[k]].resistance();
     diag[links_[k].i] += r.block<6, 6>(0, 0);
     diag[links_[k].j] += r.block<6, 6>(6, 6);
     coupling[c++] = r.block<6, 6>(0, 6);

@@ -28,6 +28,7 @@
 #include "coupling/fcm_pair_resistance.hpp"
 #include "coupling/pair_tensors.hpp"
 #include "dem/integrate/block_matrix.hpp"
+#include "dem/integrate/implicit_contacts.hpp"
 #include "dem/pair_forces.hpp"
 
 namespace suspend::coupling {
@@ -60,8 +61,19 @@ class SubgridLubrication {
   void add_velocity_forces(const Eigen::VectorXd& dv, Eigen::VectorXd& f) const;
   // f += gammadot Delta_R_FE : E_hat.
   void add_strain_forces(double shear_rate, Eigen::VectorXd& f) const;
-  // Sum of the pair force dipoles for disturbance velocities dv and shear rate (stress contract above).
+  // Sum of the pair force dipoles for disturbance velocities dv and shear rate (stress contract above); the
+  // implicit contact terms below are not part of it.
   Mat3 stress(const Eigen::VectorXd& dv, double shear_rate) const;
+
+  // Linearly implicit contacts (dem/integrate/implicit_contacts.hpp), after assemble(): the step resistance
+  // dt C^T S C of every pair with a contact stiffness and its ambient force (simple shear, per unit rate; box
+  // height ly) are added to that pair's terms, so the velocity solve balances the end-of-step contact forces.
+  // Contact pairs are always within the correction range (s' < cutoff).
+  void add_contact_steps(const std::vector<ActivePair>& pairs, const std::vector<ContactStiffness>& stiffness,
+                         double dt, const std::vector<Vec3>& positions, double ly);
+  // Per pair of the assembled list: the contact force change on j, -dt S u_c, for disturbance velocities dv and
+  // the shear rate (zero for pairs without a contact step; empty without any).
+  void contact_changes(const Eigen::VectorXd& dv, double shear_rate, std::vector<Vec3>& change_on_j) const;
   // R_Stokes + sum Delta_R over the pairs with s' < s_max as a symmetric block matrix (the Krylov preconditioner),
   // R_Stokes = diag(6 pi a, 8 pi a^3). Restricting it to the close pairs keeps its Cholesky factor sparse.
   void resistance_matrix(const std::vector<double>& radius, double s_max, SymmetricBlockMatrix& m);
@@ -74,6 +86,8 @@ class SubgridLubrication {
   };
   const SpeciesPair& pair_of(int si, int sj) const { return pairs_[si * species_radius_.size() + sj]; }
   Vector12 pair_forces(std::size_t link, const Eigen::VectorXd& dv, double shear_rate) const;
+  // -dt S u_c of a link with a contact step.
+  Vec3 contact_change(std::size_t link, const Eigen::VectorXd& dv, double shear_rate) const;
 
   std::vector<double> species_radius_;
   SubgridParams params_;
@@ -85,9 +99,14 @@ class SubgridLubrication {
   std::vector<double> lever_i_, lever_j_, s_;
   std::vector<BlockLink> near_links_;
   // Delta_R of each pair kept as its block coefficients (pair_resistance_product applies it; the 12 x 12 matrices
-  // would be 1152 bytes per pair to stream through every application).
+  // would be 1152 bytes per pair to stream through every application). The implicit contact step's resistance
+  // dt C^T S C of a contact pair is not folded in: pair_forces and resistance_matrix add it from contact_.
   std::vector<PairResistanceCoefficients> delta_r_;
   std::vector<Vector12> delta_strain_;  // for unit shear rate
+  std::vector<std::uint32_t> link_pair_;  // index of each link's pair in the assembled list
+  std::size_t pair_count_ = 0;
+  std::vector<std::int32_t> link_contact_;  // per link: its contact step, or -1
+  std::vector<ContactStep> contact_;        // ambient contact velocity for unit shear rate
 };
 
 }  // namespace suspend::coupling

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/capacity.hpp"
+
 namespace suspend {
 
 namespace {
@@ -76,8 +78,10 @@ void CellListSearch::find_pairs(const std::vector<Vec3>& position, const std::ve
         for (std::uint32_t t = t0; t < start_[other + 1]; ++t) {
           const std::uint32_t q = order_[t];
           if (full && q <= p) continue;
-          if (within(box, rp, position[q], ap + radius[q] + gap_cutoff))
+          if (within(box, rp, position[q], ap + radius[q] + gap_cutoff)) {
+            reserve_one_more(mine);
             mine.push_back({std::min(p, q), std::max(p, q)});
+          }
         }
       }
     };
@@ -132,7 +136,7 @@ void CellListSearch::find_pairs(const std::vector<Vec3>& position, const std::ve
     for (const NeighbourPair& pr : list) ++row_[pr.i + 1];
   }
   for (std::size_t i = 0; i < np; ++i) row_[i + 1] += row_[i];
-  pairs.resize(total);
+  resize_with_headroom(pairs, total);
   fill_.assign(row_.begin(), row_.end() - 1);
   for (const auto& list : found_)
     for (const NeighbourPair& pr : list) pairs[fill_[pr.i]++] = pr;

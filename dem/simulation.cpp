@@ -5,18 +5,13 @@
 #include <numbers>
 #include <sstream>
 
+#include "core/capacity.hpp"
 #include "core/error.hpp"
 #include "dem/hydro/stokes_drag.hpp"
 
 namespace suspend {
 
 using std::numbers::pi;
-
-void TimeStepParams::validate() const {
-  if (mode == Mode::fixed && !(fixed > 0.0)) throw InputError("run.time_step.fixed must be > 0");
-  if (!(max_displacement > 0.0)) throw InputError("run.time_step.max_displacement must be > 0");
-  if (!(max > 0.0)) throw InputError("run.time_step.max must be > 0");
-}
 
 void SimulationParams::validate() const {
   suspend::validate(contact);
@@ -36,26 +31,28 @@ void SimulationParams::validate() const {
     throw InputError("flow.periods must be >= 1 for a wavy shear (flow.amplitude != 0)");
   if (integrator == Integrator::inertial && !(stokes_number > 0.0 && std::isfinite(stokes_number)))
     throw InputError("run.stokes_number must be > 0 for run.integrator = inertial");
+  if (time_step.implicit_contacts && integrator != Integrator::overdamped)
+    throw InputError("run.time_step.contacts = implicit needs run.integrator = overdamped");
 }
 
 PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, const SimulationParams& params)
     : state_(std::move(state)), box_(box), params_(params),
-      range_(std::max(interaction_range(params.contact),
-                      params.lubrication ? params.resistance.lubrication.outer_cutoff : 0.0)),
-      list_(range_, params.skin) {
+      contacts_(std::max(interaction_range(params.contact),
+                         params.lubrication ? params.resistance.lubrication.outer_cutoff : 0.0),
+                params.skin, state_.particles, state_.contacts) {
   params_.validate();
+  if (params_.time_step.implicit_contacts && !params_.lubrication)
+    throw InputError("run.time_step.contacts = implicit needs the resistance solve: hydrodynamics.lubrication.enabled "
+                     "= true (or hydrodynamics.model = fcm)");
   box_.set_strain(state_.strain);
   const Particles& p = state_.particles;
   const std::size_t n = p.size();
-  const auto [a_min, a_max] = std::minmax_element(p.radius.begin(), p.radius.end());
-  a_min_ = *a_min;
+  a_min_ = *std::min_element(p.radius.begin(), p.radius.end());
   for (double a : p.radius) radius_cubed_ += a * a * a;
-  history_ = ContactHistory(n, ContactHistory::capacity_for(*a_min, *a_max));
-  history_.restore(state_.contacts);
   state_.contacts.clear();
   if (params_.control == FlowControl::rate || state_.shear_rate == 0.0) state_.shear_rate = params_.shear_rate;
   rate_ = state_.shear_rate;
-  zero_.assign(n, Vec3::Zero());
+  if (params_.control == FlowControl::stress) zero_.assign(n, Vec3::Zero());  // the force-free problem's input
   // Lubrication is tabulated per pair of distinct radii.
   species_radius_ = p.radius;
   std::sort(species_radius_.begin(), species_radius_.end());
@@ -64,7 +61,11 @@ PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, co
   for (std::size_t i = 0; i < n; ++i)
     species_[i] = static_cast<int>(std::lower_bound(species_radius_.begin(), species_radius_.end(), p.radius[i]) -
                                    species_radius_.begin());
-  if (params_.lubrication) {
+  if (params_.lubrication && params_.integrator == Integrator::inertial) {
+    // Explicit forces (paper 000 eq. 15): no resistance matrix, no warm start.
+    explicit_.emplace(species_radius_, params_.resistance.lubrication, params_.resistance.lubrication_stress);
+    state_.warm_start.clear();
+  } else if (params_.lubrication) {
     solver_.emplace(species_radius_, params_.resistance);
     if (params_.control == FlowControl::stress) force_solver_.emplace(species_radius_, params_.resistance);
     const std::size_t w = state_.warm_start.size();
@@ -101,7 +102,7 @@ PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, co
 
 SimulationState PairwiseSimulation::state_with_contacts() const {
   SimulationState s = state_;
-  s.contacts = history_.entries();
+  s.contacts = contacts_.histories();
   if (solver_) {
     const Eigen::VectorXd& dv = solver_->disturbance();
     s.warm_start.assign(dv.data(), dv.data() + dv.size());
@@ -121,23 +122,9 @@ void PairwiseSimulation::fail(const std::string& what) const {
 
 void PairwiseSimulation::contact_forces(double image_velocity) {
   Particles& p = state_.particles;
-  list_.update(p.position, p.radius, box_);
-  compact_active_pairs(list_.pairs(), p, box_, range_, active_);
-  active_index_.resize(active_.size());
-  for (std::size_t k = 0; k < active_.size(); ++k) active_index_[k] = {active_[k].i, active_[k].j};
-  pair_history_.resize(active_.size());
-  history_.gather(active_index_, pair_history_);
-  with_law(params_.contact, [&](const auto& law) {
-    accumulate_pair_forces(active_, p, image_velocity, law, state_.last_dt, pair_history_, sums_, pair_force_,
-                           scratch_);
-  });
-  if (sums_.max_overlap > params_.max_overlap * a_min_) {
-    std::ostringstream s;
-    s << "overlap " << sums_.max_overlap << " a_1 between particles " << sums_.max_overlap_i << " and "
-      << sums_.max_overlap_j << " exceeds the bound " << params_.max_overlap * a_min_
-      << " (run.max_overlap x smallest radius); reduce the time step or stiffen the contacts";
-    fail(s.str());
-  }
+  if (const auto overlap = contacts_.evaluate(p, box_, image_velocity, params_.contact, state_.last_dt,
+                                               params_.time_step.implicit_contacts, params_.max_overlap * a_min_))
+    fail(*overlap);
 }
 
 double PairwiseSimulation::overdamped_velocities() {
@@ -146,26 +133,33 @@ double PairwiseSimulation::overdamped_velocities() {
   const double volume = box_.volume();
   std::ostringstream where;
   where << "step " << state_.step << ", strain " << state_.strain;
+  ImplicitContacts implicit;
+  if (params_.time_step.implicit_contacts) implicit = {&contacts_.stiffness(), dt_};
+  const PairSums& sums = contacts_.sums();
+  const std::vector<ActivePair>& pairs = contacts_.pairs();
   if (solver_ && params_.control == FlowControl::rate) {
-    solver_->solve(p, species_, active_, flow(rate_), sums_.force, sums_.torque, solve_, where.str());
+    solver_->solve(p, species_, pairs, flow(rate_), sums.force, sums.torque, solve_, where.str(), implicit);
   } else if (solver_) {
-    // Rate-driven problem at unit rate and force-driven problem at zero rate; the stress is linear in both.
-    solver_->solve(p, species_, active_, flow(1.0), zero_, zero_, solve_, where.str());
-    force_solver_->solve(p, species_, active_, flow(0.0), sums_.force, sums_.torque, force_solve_, where.str());
-    const double sigma_h = 1.0 + (solve_.stress[Contribution::hydrodynamic](0, 1) +
-                                  solve_.stress[Contribution::lubrication](0, 1)) / volume;
-    const double sigma_c = (sums_.virial.total()(0, 1) + force_solve_.stress.total()(0, 1)) / volume;
+    // Rate-driven problem at unit rate and force-driven problem at zero rate; velocities, stress and the implicit
+    // contact changes are linear in both.
+    solver_->solve(p, species_, pairs, flow(1.0), zero_, zero_, solve_, where.str(), implicit);
+    force_solver_->solve(p, species_, pairs, flow(0.0), sums.force, sums.torque, force_solve_, where.str(),
+                         implicit);
+    const double sigma_h = 1.0 + solve_.stress.total()(0, 1) / volume;
+    const double sigma_c = (sums.virial.total()(0, 1) + force_solve_.stress.total()(0, 1)) / volume;
     rate_ = (params_.shear_stress - sigma_c) / sigma_h;
     for (std::size_t i = 0; i < n; ++i) {
       solve_.velocity[i] = rate_ * solve_.velocity[i] + force_solve_.velocity[i];
       solve_.angular_velocity[i] = rate_ * solve_.angular_velocity[i] + force_solve_.angular_velocity[i];
     }
-    for (auto c : {Contribution::hydrodynamic, Contribution::lubrication})
-      solve_.stress[c] = rate_ * solve_.stress[c] + force_solve_.stress[c];
+    for (std::size_t c = 0; c < contribution_count; ++c)
+      solve_.stress.part[c] = rate_ * solve_.stress.part[c] + force_solve_.stress.part[c];
+    for (std::size_t k = 0; k < solve_.contact_change_on_j.size(); ++k)
+      solve_.contact_change_on_j[k] = rate_ * solve_.contact_change_on_j[k] + force_solve_.contact_change_on_j[k];
   } else if (params_.control == FlowControl::stress) {
     // Drag only: the hydrodynamic stress is 2 E_inf + the Stokes stresslets, the rest is the contacts'.
     const double sigma_h = 1.0 + (10.0 / 3.0) * pi * radius_cubed_ / volume;
-    rate_ = (params_.shear_stress - sums_.virial.total()(0, 1) / volume) / sigma_h;
+    rate_ = (params_.shear_stress - sums.virial.total()(0, 1) / volume) / sigma_h;
   }
   double max_speed = 0.0;
   const hydro::WavyShear f = flow(rate_);
@@ -175,8 +169,8 @@ double PairwiseSimulation::overdamped_velocities() {
       p.velocity[i] = solve_.velocity[i];
       p.angular_velocity[i] = solve_.angular_velocity[i];
     } else {
-      p.velocity[i] = hydro::faxen_velocity(a, p.position[i], f) + sums_.force[i] / (6.0 * pi * a);
-      p.angular_velocity[i] = f.angular_velocity(p.position[i]) + sums_.torque[i] / (8.0 * pi * a * a * a);
+      p.velocity[i] = hydro::faxen_velocity(a, p.position[i], f) + sums.force[i] / (6.0 * pi * a);
+      p.angular_velocity[i] = f.angular_velocity(p.position[i]) + sums.torque[i] / (8.0 * pi * a * a * a);
     }
     max_speed = std::max(max_speed, (p.velocity[i] - f.velocity(p.position[i])).norm());
   }
@@ -195,9 +189,11 @@ double PairwiseSimulation::inertial_velocities() {
       disturbance_[6 * i + k] = v[12 * i + k] - f.velocity(p.position[i])[k];
       disturbance_[6 * i + 3 + k] = v[12 * i + 3 + k] - f.angular_velocity(p.position[i])[k];
     }
-  if (solver_) {
-    solver_->explicit_forces(p, species_, active_, f, disturbance_, hydro_force_, solve_);
-    relaxation_rate_ = solver_->relaxation_rate(mass_, moment_);
+  if (explicit_) {
+    explicit_->evaluate(p, species_, contacts_.pairs(), f, disturbance_, mass_, moment_, explicit_out_);
+    relaxation_rate_ = explicit_out_.relaxation_rate;
+    solve_.stress = explicit_out_.stress;
+    solve_.iterations = 0;
   } else {
     hydro_force_.resize(6 * static_cast<Eigen::Index>(n));
     relaxation_rate_ = 0.0;
@@ -210,12 +206,13 @@ double PairwiseSimulation::inertial_velocities() {
       relaxation_rate_ = std::max({relaxation_rate_, r.translation / mass_[i], r.rotation / moment_[i]});
     }
   }
+  const Eigen::VectorXd& hydro_force = explicit_ ? explicit_out_.force : hydro_force_;
   acceleration_.resize(6 * n);
   double max_speed = 0.0;
   const double half = 0.5 * state_.last_dt;
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 a_lin = (sums_.force[i] + hydro_force_.segment<3>(6 * i)) / mass_[i];
-    const Vec3 a_ang = (sums_.torque[i] + hydro_force_.segment<3>(6 * i + 3)) / moment_[i];
+    const Vec3 a_lin = (contacts_.sums().force[i] + hydro_force.segment<3>(6 * i)) / mass_[i];
+    const Vec3 a_ang = (contacts_.sums().torque[i] + hydro_force.segment<3>(6 * i + 3)) / moment_[i];
     for (int k = 0; k < 3; ++k) acceleration_[6 * i + k] = a_lin[k], acceleration_[6 * i + 3 + k] = a_ang[k];
     p.velocity[i] = Vec3(v[12 * i], v[12 * i + 1], v[12 * i + 2]) + half * a_lin;          // eq. 15d
     p.angular_velocity[i] = Vec3(v[12 * i + 3], v[12 * i + 4], v[12 * i + 5]) + half * a_ang;
@@ -226,10 +223,12 @@ double PairwiseSimulation::inertial_velocities() {
 
 void PairwiseSimulation::finish_stress(double rate) {
   const Particles& p = state_.particles;
-  stress_ = sums_.virial;
-  if (solver_) {
-    stress_[Contribution::hydrodynamic] = solve_.stress[Contribution::hydrodynamic];
-    stress_[Contribution::lubrication] = solve_.stress[Contribution::lubrication];
+  stress_ = contacts_.sums().virial;
+  if (params_.lubrication) {
+    // Hydrodynamic and lubrication sums; with implicit contacts also the contacts' change over the step.
+    for (std::size_t c = 0; c < contribution_count; ++c) stress_.part[c] += solve_.stress.part[c];
+    std::vector<Vec3>& pair_force = contacts_.pair_forces();
+    for (std::size_t k = 0; k < solve_.contact_change_on_j.size(); ++k) pair_force[k] += solve_.contact_change_on_j[k];
   } else {
     const hydro::WavyShear f = flow(rate);
     Mat3& h = stress_[Contribution::hydrodynamic];
@@ -253,40 +252,46 @@ void PairwiseSimulation::evaluate() {
     }
   // Contacts see the image velocity of the last step's rate (their velocities are that step's).
   contact_forces(state_.shear_rate * box_.length().y());
+  // Implicit contacts: the step precedes the solve (time_step_control.hpp), from the last step's speeds and this
+  // step's contacts.
+  if (params_.time_step.implicit_contacts) {
+    dt_ = overdamped_time_step(params_.time_step, params_.contact, state_.shear_rate,
+                               max_nonaffine_speed(p, flow(state_.shear_rate)), a_min_, state_.last_dt,
+                               contacts_.sums().mean_compliance());
+  }
   rate_ = params_.control == FlowControl::rate ? params_.shear_rate : state_.shear_rate;
   const double max_speed = inertial ? inertial_velocities() : overdamped_velocities();
   if (!std::isfinite(rate_)) fail("the stress control gave a non-finite shear rate");
   for (std::size_t i = 0; i < n; ++i)
     if (!p.velocity[i].allFinite() || !p.angular_velocity[i].allFinite()) {
       std::ostringstream s;
-      s << "non-finite velocity of particle " << i << " (contact force " << sums_.force[i].transpose() << ")";
+      s << "non-finite velocity of particle " << i << " (contact force " << contacts_.sums().force[i].transpose()
+        << ")";
       fail(s.str());
     }
   finish_stress(rate_);
 
   // Time step: fixed, or bounded strain increment, non-affine displacement and the fastest contact or
   // hydrodynamic time scale (overdamped: drag relaxation 6 pi a / k; inertial: sqrt(m / k) and m / R).
-  if (params_.time_step.mode == TimeStepParams::Mode::fixed) {
-    dt_ = params_.time_step.fixed;
-  } else {
-    const TimeStepParams& ts = params_.time_step;
+  const TimeStepParams& ts = params_.time_step;
+  if (ts.mode == TimeStepParams::Mode::fixed) {
+    dt_ = ts.fixed;
+  } else if (inertial) {
     const double k = stiffness_scale(params_.contact);
     dt_ = std::abs(rate_) > 0.0 ? ts.max / std::abs(rate_) : ts.max;
     if (max_speed > 0.0) dt_ = std::min(dt_, ts.max_displacement / max_speed);
-    if (inertial) {
-      const double m_min = *std::min_element(mass_.begin(), mass_.end());
-      dt_ = std::min(dt_, ts.stability * std::sqrt(m_min / k));
-      if (relaxation_rate_ > 0.0) dt_ = std::min(dt_, ts.stability / relaxation_rate_);
-    } else {
-      dt_ = std::min(dt_, ts.stability * 6.0 * pi * a_min_ / k);
-    }
+    const double m_min = *std::min_element(mass_.begin(), mass_.end());
+    dt_ = std::min(dt_, ts.stability * std::sqrt(m_min / k));
+    if (relaxation_rate_ > 0.0) dt_ = std::min(dt_, ts.stability / relaxation_rate_);
+  } else if (!ts.implicit_contacts) {
+    dt_ = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt);
   }
   evaluated_ = true;
 }
 
 void PairwiseSimulation::advance() {
   if (!evaluated_) evaluate();
-  history_.scatter(active_index_, pair_history_);
+  contacts_.store_histories();
   Particles& p = state_.particles;
   const std::size_t n = p.size();
   const bool inertial = params_.integrator == Integrator::inertial;
@@ -321,7 +326,7 @@ void PairwiseSimulation::advance() {
     p.velocity[i].x() -= crossings * rate_ * ly;  // paper 000, eq. 16d
     if (inertial) state_.verlet[12 * i] -= crossings * rate_ * ly;
   }
-  list_.record_motion(nonaffine_, std::abs(dstrain));
+  contacts_.record_motion(nonaffine_, std::abs(dstrain));
   evaluated_ = false;
 }
 

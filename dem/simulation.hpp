@@ -10,6 +10,7 @@
 // scheme of paper 000 eq. 15 with the hydrodynamic forces explicit at the half-step velocities:
 //   x^{n+1} = x^n + dt u^{n+1/2},  u^{n+1/2} = u^n + (dt/2) a^n,  a^{n+1} = F(x^{n+1}, u^{n+1/2}) / m,
 //   u^{n+1} = u^{n+1/2} + (dt/2) a^{n+1};   m = St (4/3) pi a^3, moment of inertia (2/5) m a^2.
+// With lubrication the explicit forces are evaluated matrix-free (dem/integrate/explicit_hydrodynamics.hpp).
 // Flow control: an imposed shear rate, or an imposed shear stress: with zero inertia velocities and stress are
 // linear in (gammadot, F_contact), Sigma_xy = gammadot Sigma_H + Sigma_C, so each step solves the rate-driven and the
 // force-driven problems and picks gammadot = (target - Sigma_C) / Sigma_H. Lees-Edwards follows the accumulated strain.
@@ -22,6 +23,7 @@
 // checks them; advance() moves the particles. A numerical failure is raised from evaluate(), before anything
 // moved, so the state is still the last good one and can be checkpointed.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -32,21 +34,14 @@
 #include "core/stress.hpp"
 #include "dem/contact/contact_law.hpp"
 #include "dem/contact_history.hpp"
+#include "dem/contact_stage.hpp"
+#include "dem/integrate/explicit_hydrodynamics.hpp"
 #include "dem/integrate/resistance_solver.hpp"
+#include "dem/integrate/time_step_control.hpp"
 #include "dem/pair_forces.hpp"
 #include "dem/verlet_list.hpp"
 
 namespace suspend {
-
-struct TimeStepParams {
-  enum class Mode { fixed, adaptive };
-  Mode mode = Mode::adaptive;
-  double fixed = 1.0e-3;             // time step when mode == fixed (1/gammadot)
-  double max_displacement = 2.0e-3;  // adaptive: largest non-affine displacement per step (a_1)
-  double max = 1.0e-2;               // adaptive: largest strain increment per step, gammadot dt
-  double stability = 0.2;            // dt <= stability * (fastest relaxation or oscillation time)
-  void validate() const;
-};
 
 enum class FlowControl { rate, stress };
 enum class Integrator { overdamped, inertial };
@@ -104,13 +99,15 @@ class PairwiseSimulation {
   double shear_rate() const { return rate_; }
   double time_step() const { return dt_; }
   const StressTensors& stress() const { return stress_; }
-  double max_overlap() const { return sums_.max_overlap; }
-  int solver_iterations() const { return solve_.iterations; }
-  std::size_t contact_count() const { return sums_.contacts; }
-  const std::vector<ActivePair>& active_pairs() const { return active_; }
-  const VerletList& neighbours() const { return list_; }
+  double max_overlap() const { return contacts_.sums().max_overlap; }
+  // Conjugate-gradient iterations of the step (both problems under stress control) and the larger residual.
+  int solver_iterations() const { return solve_.iterations + (force_solver_ ? force_solve_.iterations : 0); }
+  double solver_residual() const { return std::max(solve_.residual, force_solver_ ? force_solve_.residual : 0.0); }
+  std::size_t contact_count() const { return contacts_.sums().contacts; }
+  const std::vector<ActivePair>& active_pairs() const { return contacts_.pairs(); }
+  const VerletList& neighbours() const { return contacts_.neighbours(); }
   // Force on j of each active pair (same order as active_pairs()), for snapshots.
-  const std::vector<Vec3>& pair_forces() const { return pair_force_; }
+  const std::vector<Vec3>& pair_forces() const { return contacts_.pair_forces(); }
 
  private:
   hydro::WavyShear flow(double rate) const {
@@ -125,19 +122,15 @@ class PairwiseSimulation {
   SimulationState state_;
   Box box_;
   SimulationParams params_;
-  double range_ = 0.0;         // largest gap at which a pair interacts
   double a_min_ = 1.0;         // smallest radius (overlap bound, time-step bound)
   double radius_cubed_ = 0.0;  // sum of a^3, for the Stokes stresslets of the drag-only model
-  VerletList list_;
-  ContactHistory history_;
-  std::vector<ActivePair> active_;
-  std::vector<NeighbourPair> active_index_;
-  std::vector<PairHistory> pair_history_;
-  std::vector<Vec3> pair_force_;
+  ContactStage contacts_;
   std::vector<double> species_radius_;  // distinct radii
   std::vector<int> species_;            // index into species_radius_ per particle
   std::optional<ResistanceSolver> solver_;
   std::optional<ResistanceSolver> force_solver_;  // stress control: the force-driven problem (own warm start)
+  std::optional<ExplicitHydrodynamics> explicit_;  // inertial with lubrication: matrix-free explicit forces
+  ExplicitHydroResult explicit_out_;
   SolveResult solve_, force_solve_;
   Eigen::VectorXd disturbance_, hydro_force_;
   std::vector<Vec3> zero_;
@@ -145,8 +138,6 @@ class PairwiseSimulation {
   std::vector<double> acceleration_;  // inertial: a^{n+1}, alpha^{n+1} of the current evaluation (6 per particle)
   double relaxation_rate_ = 0.0;      // inertial: bound on the fastest hydrodynamic relaxation rate
   double rate_ = 1.0;
-  PairSums sums_;
-  std::vector<PairSums> scratch_;
   std::vector<Vec3> nonaffine_;
   StressTensors stress_;
   double dt_ = 0.0;

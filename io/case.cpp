@@ -182,6 +182,10 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     ts.max_displacement = t.number("max_displacement", ts.max_displacement, Range::positive());
     ts.max = t.number("max", ts.max, Range::positive());
     ts.stability = t.number("stability", ts.stability, Range::open_closed(0.0, 1.0));
+    ts.implicit_contacts = t.choice("contacts", "explicit", {"explicit", "implicit"}) == "implicit";
+    ts.growth = t.number("growth", ts.growth, Range::open_closed(1.0, 10.0));
+    ts.displacement_per_compliance =
+        t.number("displacement_per_compliance", ts.displacement_per_compliance, Range::positive());
     t.finish();
 
     SchemaReader o = r.child("output");
@@ -195,9 +199,12 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   }
   top.finish();
   c.simulation.validate();
+  if (c.hydrodynamics == "pairwise" && c.simulation.time_step.implicit_contacts && !c.simulation.lubrication)
+    throw InputError("run.time_step.contacts = implicit needs hydrodynamics.lubrication.enabled = true (the "
+                     "resistance solve) or hydrodynamics.model = fcm");
   if (c.hydrodynamics == "fcm") {
-    if (c.simulation.control != FlowControl::rate)
-      throw InputError("flow.control = stress is not yet available with hydrodynamics.model = fcm (use rate)");
+    if (c.simulation.time_step.implicit_contacts && !c.fcm.subgrid)
+      throw InputError("run.time_step.contacts = implicit needs hydrodynamics.fcm.subgrid = true");
     if (c.flow != "simple_shear")
       throw InputError("flow.type = " + c.flow + " is not available with hydrodynamics.model = fcm (use simple_shear)");
     if (c.simulation.integrator != Integrator::overdamped)
@@ -289,6 +296,9 @@ YAML::Node to_yaml(const Case& c) {
   r["time_step"]["max_displacement"] = number_node(ts.max_displacement);
   r["time_step"]["max"] = number_node(ts.max);
   r["time_step"]["stability"] = number_node(ts.stability);
+  r["time_step"]["contacts"] = ts.implicit_contacts ? "implicit" : "explicit";
+  r["time_step"]["growth"] = number_node(ts.growth);
+  r["time_step"]["displacement_per_compliance"] = number_node(ts.displacement_per_compliance);
   r["output"]["series_every"] = number_node(c.run.output.series_every);
   r["output"]["snapshot_every"] = number_node(c.run.output.snapshot_every);
   r["output"]["checkpoint_every"] = number_node(c.run.output.checkpoint_every);

@@ -8,8 +8,9 @@
 namespace suspend::io {
 
 namespace {
-const std::array<const char*, 11> scalar_columns = {"step", "time",   "strain", "shear_rate", "dt", "contacts",
-                                                    "max_overlap", "eta_r", "N1", "N2",  "Pi"};
+const std::array<const char*, 13> scalar_columns = {
+    "step", "time", "strain", "shear_rate", "dt", "contacts", "max_overlap", "eta_r", "N1", "N2", "Pi",
+    "solver_iterations", "solver_residual"};
 std::array<double, 6> components_of(const Mat3& m) {
   return {m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(0, 2), m(1, 2)};
 }
@@ -83,7 +84,8 @@ void RunFile::append(const SeriesRow& row) {
   const std::map<std::string, double> scalars = {
       {"step", static_cast<double>(row.step)}, {"time", row.time}, {"strain", row.strain},
       {"shear_rate", rate}, {"dt", row.dt}, {"contacts", row.contacts}, {"max_overlap", row.max_overlap},
-      {"eta_r", rh.shear / rate}, {"N1", rh.n1}, {"N2", rh.n2}, {"Pi", rh.pressure}};
+      {"eta_r", rh.shear / rate}, {"N1", rh.n1}, {"N2", rh.n2}, {"Pi", rh.pressure},
+      {"solver_iterations", row.solver_iterations}, {"solver_residual", row.solver_residual}};
   for (const auto& [name, v] : scalars) tables_.at(name).append(&v);
   tables_.at("stress/total").append(components_of(total).data());
   for (std::size_t c = 0; c < contribution_count; ++c)

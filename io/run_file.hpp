@@ -26,6 +26,9 @@ struct SeriesRow {
   std::int64_t step = 0;
   double time = 0.0, strain = 0.0, shear_rate = 1.0, dt = 0.0;
   double contacts = 0.0, max_overlap = 0.0;
+  // Iterations and relative residual of the step's hydrodynamic solve (pairwise: conjugate gradient; FCM: GMRES,
+  // both parts under stress control); zero without a solve.
+  double solver_iterations = 0.0, solver_residual = 0.0;
   StressTensors stress;
 };
 

@@ -158,6 +158,8 @@ int run_case(const Case& c, const RunOptions& o) {
           row.dt = sim.time_step();
           row.contacts = static_cast<double>(sim.contact_count());
           row.max_overlap = sim.max_overlap();
+          row.solver_iterations = sim.solver_iterations();
+          row.solver_residual = sim.solver_residual();
           row.stress = sim.stress();
           file.append(row);
           clock.next_series = next_multiple(strain, every.series_every);

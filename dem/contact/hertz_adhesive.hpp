@@ -110,8 +110,12 @@ class HertzAdhesive {
 
     const Vec3 u_c = m.contact_velocity(g);
     const Vec3 u_t = u_c - u_c.dot(g.n) * g.n;
-    const StickSlideResult t = stick_slide(h.tangential_stretch, g.n, u_t, dt, kt_, p_.mu_s * elastic);
+    const double limit = p_.mu_s * elastic;
+    const StickSlideResult t = stick_slide(h.tangential_stretch, g.n, u_t, dt, kt_, limit);
     f.add_tangential(g, t.force_on_j, Contribution::contact_tangential);
+    // dF_n/d(delta): the Hertz tangent 1.5 k_n sqrt(delta), and the supplementary wall's while it acts.
+    f.normal_stiffness = 1.5 * (p_.kn * std::sqrt(delta) + (s > 0.0 ? k_s_ * std::sqrt(s) : 0.0));
+    f.tangential_stiffness = t.sliding || !(limit > 0.0) ? 0.0 : kt_;
     return f;
   }
 

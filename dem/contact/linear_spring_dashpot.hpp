@@ -67,8 +67,11 @@ struct LinearSpringDashpot {
 
     const Vec3 u_c = m.contact_velocity(g);
     const Vec3 u_t = u_c - u_c.dot(g.n) * g.n;
-    const StickSlideResult t = stick_slide(h.tangential_stretch, g.n, u_t, dt, p.kt, friction.limit(f_n));
+    const double limit = friction.limit(f_n);
+    const StickSlideResult t = stick_slide(h.tangential_stretch, g.n, u_t, dt, p.kt, limit);
     f.add_tangential(g, t.force_on_j, Contribution::contact_tangential);
+    f.normal_stiffness = p.kn;
+    f.tangential_stiffness = t.sliding || !(limit > 0.0) ? 0.0 : p.kt;
 
     rolling.apply(g, m, f_n, dt, h.rolling_stretch, f);
     return f;

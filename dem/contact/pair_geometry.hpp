@@ -51,10 +51,16 @@ struct RelativeMotion {
 };
 
 // Forces on j split by origin, and the torques on i and j. The stresslet follows from d and each force part.
+// The contact law also reports its tangent stiffnesses at this state, for the linearly implicit (backward Euler)
+// contact step (docs/overdamped.md): normal_stiffness = dF_n/d(delta) of the elastic normal force, and
+// tangential_stiffness = k_t while the tangential spring sticks (0 when it slides, is frictionless or absent).
+// Both are zero out of contact; surface forces stay explicit and add none.
 struct PairForce {
   std::array<Vec3, contribution_count> on_j;
   Vec3 torque_i = Vec3::Zero();
   Vec3 torque_j = Vec3::Zero();
+  double normal_stiffness = 0.0;
+  double tangential_stiffness = 0.0;
   PairForce() {
     for (auto& f : on_j) f.setZero();
   }

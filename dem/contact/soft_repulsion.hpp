@@ -24,7 +24,10 @@ struct SoftRepulsion {
   PairForce operator()(const PairGeometry& g) const {
     PairForce f;
     const double delta = -g.gap();
-    if (delta > 0.0) f[Contribution::contact_normal] = p.kn * delta * g.n;
+    if (delta > 0.0) {
+      f[Contribution::contact_normal] = p.kn * delta * g.n;
+      f.normal_stiffness = p.kn;
+    }
     return f;
   }
   double energy(const PairGeometry& g) const {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "core/capacity.hpp"
 #include "core/error.hpp"
 
 namespace suspend {
@@ -10,7 +11,7 @@ namespace suspend {
 void SymmetricBlockMatrix::set_structure(std::size_t n, const std::vector<BlockLink>& links) {
   links_ = links;
   diagonal_.resize(n);
-  coupling_.resize(links.size());
+  resize_with_headroom(coupling_, links.size());
   // Counting sort of the link ends by row: row r lists its links in link order.
   row_start_.assign(n + 1, 0);
   for (const BlockLink& l : links) {
@@ -21,7 +22,7 @@ void SymmetricBlockMatrix::set_structure(std::size_t n, const std::vector<BlockL
     ++row_start_[l.j + 1];
   }
   for (std::size_t r = 0; r < n; ++r) row_start_[r + 1] += row_start_[r];
-  entries_.resize(2 * links.size());
+  resize_with_headroom(entries_, 2 * links.size());
   // Fill using row_start_[r] as a cursor, then shift back.
   for (std::size_t k = 0; k < links.size(); ++k) {
     const BlockLink& l = links[k];

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/capacity.hpp"
 #include "core/error.hpp"
 
 namespace suspend {
@@ -35,7 +36,7 @@ void PreconditionedConjugateGradient::prepare(const SymmetricBlockMatrix& a) {
   }
   if (!spd) throw NumericalError("resistance solve: a diagonal 6x6 block is not positive definite");
   const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(a.links());
-  scaled_.resize(nl);
+  resize_with_headroom(scaled_, nl);
 #pragma omp parallel for schedule(static) if (nl > 512)
   for (std::ptrdiff_t k = 0; k < nl; ++k) {
     const BlockLink& l = a.link_list()[k];

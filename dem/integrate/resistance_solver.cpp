@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/capacity.hpp"
 #include "core/error.hpp"
 #include "dem/hydro/stokes_drag.hpp"
 
@@ -30,13 +31,14 @@ ResistanceSolver::ResistanceSolver(std::vector<double> species_radius, const Res
 
 void ResistanceSolver::solve(const Particles& p, const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
                              const std::vector<Vec3>& force, const std::vector<Vec3>& torque, SolveResult& out,
-                             std::string_view context) {
-  solve(p, p.species, pairs, flow, force, torque, out, context);
+                             std::string_view context, const ImplicitContacts& implicit) {
+  solve(p, p.species, pairs, flow, force, torque, out, context, implicit);
 }
 
 void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& species,
                                 const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
-                                const std::vector<Vec3>& force, const std::vector<Vec3>& torque) {
+                                const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
+                                const ImplicitContacts& implicit) {
   const std::size_t n = p.size();
   const bool keep_inactive = params_.solver == LinearSolver::cholesky;  // stable pattern for the analysis
 
@@ -44,13 +46,15 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
   links_.clear();
   link_pair_.clear();
   lubricated_ = 0;
-  pair_link_.resize(pairs.size());
+  resize_with_headroom(pair_link_, pairs.size());
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const ActivePair& pr = pairs[k];
     const bool active = law(species[pr.i], species[pr.j]).active(pr.geometry.gap());
     lubricated_ += active ? 1 : 0;
-    if (active || keep_inactive) {
+    if (active || keep_inactive || stiff(implicit, k)) {
       pair_link_[k] = static_cast<std::int32_t>(links_.size());
+      reserve_one_more(links_);
+      reserve_one_more(link_pair_);
       links_.push_back({pr.i, pr.j});
       link_pair_.push_back(static_cast<std::uint32_t>(k));
     } else {
@@ -59,22 +63,28 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
   }
   matrix_.set_structure(n, links_);
   const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(links_.size());
-  self_i_.resize(nl);
-  self_j_.resize(nl);
-  strain_.resize(nl);
+  resize_with_headroom(self_i_, nl);
+  resize_with_headroom(self_j_, nl);
+  resize_with_headroom(strain_, nl);
 
   // Pair blocks (R_lub is zero beyond the outer cutoff): each link writes only its own slots.
 #pragma omp parallel for schedule(static) if (nl > 256)
   for (std::ptrdiff_t l = 0; l < nl; ++l) {
-    const ActivePair& pr = pairs[link_pair_[l]];
+    const std::size_t k = link_pair_[l];
+    const ActivePair& pr = pairs[k];
     const hydro::PairLubrication& lub = law(species[pr.i], species[pr.j]);
     const double gap = pr.geometry.gap();
-    const hydro::Matrix12 r = lub.resistance(pr.geometry.n, gap);
+    hydro::Matrix12 r = lub.resistance(pr.geometry.n, gap);
+    strain_[l] = lub.strain_forces(pr.geometry.n, gap, flow.strain_rate(p.position[pr.i]),
+                                   flow.strain_rate(p.position[pr.j]));
+    if (stiff(implicit, k)) {  // backward-Euler contact terms (implicit_contacts.hpp)
+      const ContactStep c = contact_step(pr.geometry, p.position[pr.i], (*implicit.stiffness)[k], implicit.dt, flow);
+      r += c.resistance();
+      strain_[l] += c.ambient_force();
+    }
     self_i_[l].pack(r.block<6, 6>(0, 0));
     self_j_[l].pack(r.block<6, 6>(6, 6));
     matrix_.coupling()[l] = r.block<6, 6>(0, 6);
-    strain_[l] = lub.strain_forces(pr.geometry.n, gap, flow.strain_rate(p.position[pr.i]),
-                                   flow.strain_rate(p.position[pr.j]));
   }
 
   // Block rows: Stokes drag + the pair self blocks; right-hand side F_nh + Faxen + strain forces, summed in link
@@ -105,7 +115,8 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
 
 void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
                              const hydro::WavyShear& flow, const std::vector<Vec3>& force,
-                             const std::vector<Vec3>& torque, SolveResult& out, std::string_view context) {
+                             const std::vector<Vec3>& torque, SolveResult& out, std::string_view context,
+                             const ImplicitContacts& implicit) {
   const std::size_t n = p.size();
   if (species.size() != n || force.size() != n || torque.size() != n || p.position.size() != n)
     throw InputError("resistance solver: species, force and torque need one entry per particle");
@@ -119,8 +130,10 @@ void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species
   }
   for (const ActivePair& pr : pairs)
     if (pr.i >= n || pr.j >= n || pr.i == pr.j) throw InputError("resistance solver: invalid pair in the list");
+  if (implicit.enabled() && (implicit.stiffness->size() != pairs.size() || !(implicit.dt >= 0.0)))
+    throw InputError("resistance solver: implicit contacts need one stiffness per pair and dt >= 0");
 
-  assemble(p, species, pairs, flow, force, torque);
+  assemble(p, species, pairs, flow, force, torque, implicit);
 
   const Eigen::Index size = 6 * static_cast<Eigen::Index>(n);
   if (!params_.warm_start || previous_.size() != size) previous_ = Eigen::VectorXd::Zero(size);
@@ -154,12 +167,12 @@ void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species
     throw NumericalError(s.str());
   }
 
-  report_solution(p, species, pairs, flow, out);
+  report_solution(p, species, pairs, flow, out, implicit);
 }
 
 void ResistanceSolver::report_solution(const Particles& p, const std::vector<int>& species,
                                        const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
-                                       SolveResult& out) {
+                                       SolveResult& out, const ImplicitContacts& implicit) {
   const std::size_t n = p.size();
   out.velocity.resize(n);
   out.angular_velocity.resize(n);
@@ -169,7 +182,7 @@ void ResistanceSolver::report_solution(const Particles& p, const std::vector<int
     out.angular_velocity[i] = flow.angular_velocity(p.position[i]) + dv.tail<3>();
   }
   out.lubricated_pairs = lubricated_;
-  accumulate_stress(p, species, pairs, flow, out);
+  accumulate_stress(p, species, pairs, flow, out, implicit);
 }
 
 void ResistanceSolver::explicit_forces(const Particles& p, const std::vector<int>& species,
@@ -203,9 +216,13 @@ double ResistanceSolver::relaxation_rate(const std::vector<double>& mass, const 
 
 void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<int>& species,
                                          const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
-                                         SolveResult& out) {
+                                         SolveResult& out, const ImplicitContacts& implicit) {
   const std::ptrdiff_t np = static_cast<std::ptrdiff_t>(pairs.size());
-  out.lubrication_force_on_j.resize(np);
+  resize_with_headroom(out.lubrication_force_on_j, np);
+  if (implicit.enabled())
+    out.contact_change_on_j.assign(np, Vec3::Zero());
+  else
+    out.contact_change_on_j.clear();
   const bool dipole = params_.lubrication_stress == LubricationStress::force_dipole;
   if (!dipole) pair_stress_.resize(np);
   const Eigen::VectorXd& x = previous_;
@@ -221,9 +238,18 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
     }
     const Vector6 dv_i = x.segment<6>(6 * static_cast<Eigen::Index>(pr.i));
     const Vector6 dv_j = x.segment<6>(6 * static_cast<Eigen::Index>(pr.j));
+    // The blocks hold lubrication + implicit contact terms; the contact change is taken out of the force on j.
     const Vector6 f_j =
         -(matrix_.coupling()[l].transpose() * dv_i + self_j_[l].unpacked() * dv_j) + strain_[l].segment<6>(6);
     out.lubrication_force_on_j[k] = f_j.head<3>();
+    if (stiff(implicit, k)) {
+      hydro::Vector12 dv;
+      dv << dv_i, dv_j;
+      const Vec3 change =
+          contact_step(pr.geometry, p.position[pr.i], (*implicit.stiffness)[k], implicit.dt, flow).force_change_on_j(dv);
+      out.contact_change_on_j[k] = change;
+      out.lubrication_force_on_j[k] -= change;
+    }
     if (!dipole) {
       hydro::PairMotion m;
       m.du_i = dv_i.head<3>();
@@ -245,6 +271,9 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
   } else {
     for (const Mat3& s : pair_stress_) lub += s;
   }
+  if (implicit.enabled())
+    for (std::ptrdiff_t k = 0; k < np; ++k)
+      if (stiff(implicit, k)) add_contact_change_virial(pairs[k].geometry, out.contact_change_on_j[k], out.stress);
   Mat3& hyd = out.stress[Contribution::hydrodynamic];
   for (std::size_t i = 0; i < p.size(); ++i) hyd += hydro::stokes_stresslet(p.radius[i], p.position[i], flow);
 }

@@ -41,6 +41,7 @@
 #include "dem/hydro/lubrication.hpp"
 #include "dem/integrate/block_matrix.hpp"
 #include "dem/integrate/conjugate_gradient.hpp"
+#include "dem/integrate/implicit_contacts.hpp"
 #include "dem/integrate/sparse_cholesky.hpp"
 #include "dem/pair_forces.hpp"
 
@@ -61,10 +62,21 @@ struct ResistanceSolverParams {
   void validate() const;
 };
 
+// Linearly implicit contacts (dem/integrate/implicit_contacts.hpp): the contact forces the caller passes are those
+// at the start of the step; the solve adds their change over dt, -dt S u_c, to the force balance.
+struct ImplicitContacts {
+  const std::vector<ContactStiffness>* stiffness = nullptr;  // per pair of the list; null: explicit contacts
+  double dt = 0.0;
+  bool enabled() const { return stiffness != nullptr; }
+};
+
 struct SolveResult {
   std::vector<Vec3> velocity, angular_velocity;  // lab frame, per particle
   std::vector<Vec3> lubrication_force_on_j;      // per pair of the list given (zero beyond the outer cutoff)
-  StressTensors stress;                          // hydrodynamic and lubrication sums; other parts zero
+  std::vector<Vec3> contact_change_on_j;         // implicit contacts: -dt S u_c per pair (empty otherwise)
+  // Hydrodynamic and lubrication sums; with implicit contacts also the virial of contact_change_on_j in
+  // contact_normal and contact_tangential; other parts zero.
+  StressTensors stress;
   int iterations = 0;                            // CG iterations (0 for Cholesky)
   double residual = 0.0;                         // relative residual |b - R dV| / |b| of the returned solution
   std::size_t lubricated_pairs = 0;              // pairs within the outer cutoff
@@ -110,13 +122,15 @@ class ResistanceSolver {
   // non-hydrodynamic force and torque on each particle. flow.box_height must be the box's L_y.
   // Throws NumericalError (message: context, iterations, residual) if CG does not reach the tolerance, or the
   // solution is not finite; InputError for inconsistent sizes or radii.
+  // With `implicit` enabled, pairs with a contact stiffness get a block even beyond the outer cutoff, the matrix is
+  // R_Stokes + sum R_lub + sum dt C^T S C and the right-hand side gains -C^T dt S u_c,inf.
   void solve(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
              const hydro::WavyShear& flow, const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
-             SolveResult& out, std::string_view context = {});
+             SolveResult& out, std::string_view context = {}, const ImplicitContacts& implicit = {});
   // Same, with the species of p.species.
   void solve(const Particles& p, const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
              const std::vector<Vec3>& force, const std::vector<Vec3>& torque, SolveResult& out,
-             std::string_view context = {});
+             std::string_view context = {}, const ImplicitContacts& implicit = {});
 
   // Inertial integrator (paper 000 eq. 15): the hydrodynamic force and torque at given disturbance velocities
   // dv (6 per particle, lab velocity minus U_inf, Omega_inf), explicitly:
@@ -144,12 +158,16 @@ class ResistanceSolver {
  private:
   const hydro::PairLubrication& law(int si, int sj) const { return laws_[si * species_radius_.size() + sj]; }
   void assemble(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
-                const hydro::WavyShear& flow, const std::vector<Vec3>& force, const std::vector<Vec3>& torque);
+                const hydro::WavyShear& flow, const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
+                const ImplicitContacts& implicit = {});
+  bool stiff(const ImplicitContacts& implicit, std::size_t k) const {
+    return implicit.enabled() && (*implicit.stiffness)[k].any();
+  }
   // Lab-frame velocities of the disturbance in previous_, and the stress sums, into out.
   void report_solution(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
-                       const hydro::WavyShear& flow, SolveResult& out);
+                       const hydro::WavyShear& flow, SolveResult& out, const ImplicitContacts& implicit = {});
   void accumulate_stress(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
-                         const hydro::WavyShear& flow, SolveResult& out);
+                         const hydro::WavyShear& flow, SolveResult& out, const ImplicitContacts& implicit);
 
   std::vector<double> species_radius_;
   ResistanceSolverParams params_;

@@ -214,8 +214,20 @@ TEST(Case, FlowControlWaveIntegratorAndModelKeys) {
                 .find("run.stokes_number"), std::string::npos);
   EXPECT_NE(error_of(base, {"run.stokes_number=0.1"}).find("run.stokes_number"),
             std::string::npos);
-  EXPECT_NE(error_of(std::string(base) + "hydrodynamics: {model: fcm}\nflow: {control: stress, shear_stress: 1}\n")
-                .find("flow.control"), std::string::npos);
+  const Case fs = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm}\n"
+                                                            "flow: {control: stress, shear_stress: 1}\n"), "");
+  EXPECT_EQ(fs.simulation.control, FlowControl::stress);
+  EXPECT_NE(error_of(std::string(base) + "hydrodynamics: {model: fcm}\nflow: {type: wavy, amplitude: 1}\n")
+                .find("flow.type"), std::string::npos);
+  YAML::Node implicit = YAML::Load(std::string(base) + "hydrodynamics: {lubrication: {enabled: true}}\n");
+  apply_override(implicit, "run.time_step.contacts=implicit");
+  const Case ic = parse_case(implicit, "");
+  EXPECT_TRUE(ic.simulation.time_step.implicit_contacts);
+  EXPECT_EQ(to_yaml_text(parse_case(to_yaml(ic), "")), to_yaml_text(ic));
+  EXPECT_NE(error_of(std::string(base) + "hydrodynamics: {lubrication: {enabled: false}}\n",
+                     {"run.time_step.contacts=implicit"})
+                .find("run.time_step.contacts"), std::string::npos);
+  EXPECT_NE(error_of(base, {"run.time_step.contacts=sometimes"}).find("run.time_step.contacts"), std::string::npos);
   EXPECT_NE(error_of(std::string(base) + "hydrodynamics: {model: fcm, fcm: {grid_spacng: 1}}\n")
                 .find("hydrodynamics.fcm.grid_spacng"), std::string::npos);
 }

@@ -34,6 +34,8 @@ SeriesRow row(int k) {
   r.strain = 0.1 * k;
   r.shear_rate = 2.0;
   r.dt = 1e-3;
+  r.solver_iterations = 3 + k;
+  r.solver_residual = 1e-9 * k;
   r.stress[Contribution::hydrodynamic](0, 1) = 2.0 + k;
   r.stress[Contribution::contact_normal](1, 1) = -3.0 * k;
   return r;
@@ -70,6 +72,8 @@ TEST(RunFile, SeriesAndSnapshotsRoundTrip) {
   EXPECT_DOUBLE_EQ(read_series(f.id(), "eta_r")[4], (2.0 + 4) / 2.0);
   EXPECT_DOUBLE_EQ(read_series(f.id(), "stress/contact_normal", 1)[2], -6.0);
   EXPECT_DOUBLE_EQ(read_series(f.id(), "stress/total", 3)[1], 3.0);
+  EXPECT_EQ(read_series(f.id(), "solver_iterations")[2], 5.0);
+  EXPECT_EQ(read_series(f.id(), "solver_residual")[4], 4e-9);
   const auto pos = h5::read_doubles(f.id(), "snapshots/000000/position");
   for (std::size_t i = 0; i < p.size(); ++i)
     for (int a = 0; a < 3; ++a) EXPECT_EQ(pos[3 * i + a], p.position[i][a]);  // bit-exact

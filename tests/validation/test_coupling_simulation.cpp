@@ -139,3 +139,66 @@ TEST(CouplingSimulation, RestartFromACheckpointRepeatsTheUninterruptedRun) {
   for (std::size_t i = 0; i < pos.size(); ++i)
     EXPECT_EQ(resumed.state().particles.position[i], whole.state().particles.position[i]) << i;
 }
+
+TEST(CouplingSimulation, ImplicitContactsRelaxAnOverlapAsBackwardEulerWithTheExactResistance) {
+  // The overlapping pair of the first test, frictionless linear spring k, fixed step, implicit contacts. With the
+  // end-of-step spring force, 6 pi a (X11A - X12A) U_j = k (delta_n - 2 U_j dt), so each step divides the overlap by
+  // 1 + lambda dt, lambda = 2 k / (6 pi (X11A - X12A)) (exact X11A, X12A at s' = 2.001: FCM + correction), for any
+  // dt: here lambda dt = 5, where the explicit step would diverge.
+  const Box box(24, 24, 24);
+  const double overlap = 0.01, k = 1.0e3;
+  const double x11a = 252.549849, x12a = -251.904583;
+  const double lambda = 2.0 * k / (6.0 * pi * (x11a - x12a));
+  SimulationParams params;
+  params.shear_rate = 0.0;
+  params.contact = ComposedLaw<SoftRepulsion>{SoftRepulsion{{k}}, {}};
+  params.time_step.implicit_contacts = true;
+  params.time_step.mode = TimeStepParams::Mode::fixed;
+  params.time_step.fixed = 5.0 / lambda;
+  FcmSimulation sim(state_of({{11, 12.2, 12.7}, {13 - overlap, 12.2, 12.7}}, {1.0, 1.0}), box, params, fcm_params());
+  double delta = overlap;
+  for (int s = 0; s < 3; ++s) {
+    sim.advance();
+    const auto& x = sim.state().particles.position;
+    const double next = 2.0 - (x[1] - x[0]).norm();
+    std::cout << "step " << s << ": overlap ratio " << next / delta << ", backward Euler " << 1.0 / 6.0 << "\n";
+    EXPECT_NEAR(next / delta * 6.0, 1.0, 2e-3);
+    delta = next;
+  }
+}
+
+TEST(CouplingSimulation, StressControlHitsTheTargetAndEqualsTheRateControlledStep) {
+  // Velocities and stress are linear in (gammadot, F_contact): the rate chosen for a target Sigma_xy, imposed
+  // instead, gives the same velocities (to the GMRES tolerance) and the same stress.
+  const Box box(9, 9, 9);
+  Rng rng(5);
+  std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+  std::vector<Vec3> pos;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        pos.push_back(Vec3(1.5 + 2.9 * i + jitter(rng), 1.5 + 2.9 * j + jitter(rng), 1.5 + 2.05 * k + jitter(rng)));
+  SimulationParams params;
+  params.control = FlowControl::stress;
+  params.shear_stress = 3.0;
+  params.time_step.implicit_contacts = true;
+  FcmParams f = fcm_params();
+  f.krylov_tolerance = 1e-9;
+  auto st = state_of(pos, std::vector<double>(pos.size(), 1.0));
+  FcmSimulation stress(st, box, params, f);
+  for (int s = 0; s < 3; ++s) stress.advance();
+  stress.evaluate();
+  EXPECT_GT(stress.contact_count(), 0u);
+  EXPECT_NEAR(stress.stress().total()(0, 1), 3.0, 1e-9);
+
+  SimulationState same = stress.state_with_contacts();
+  params.control = FlowControl::rate;
+  params.shear_rate = stress.shear_rate();
+  FcmSimulation rate(same, box, params, f);
+  rate.evaluate();
+  std::cout << "stress control: rate " << stress.shear_rate() << ", Sigma_xy at that rate "
+            << rate.stress().total()(0, 1) << "\n";
+  EXPECT_NEAR(rate.stress().total()(0, 1), 3.0, 1e-5);
+  for (std::size_t i = 0; i < pos.size(); ++i)
+    EXPECT_LT((rate.state().particles.velocity[i] - stress.state().particles.velocity[i]).norm(), 1e-5) << i;
+}

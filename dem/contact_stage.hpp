@@ -1,0 +1,70 @@
+// The contact stage of a step, shared by both engines (PairwiseSimulation, coupling::FcmSimulation): neighbour list
+// (rebuilt on its skin criterion), the pairs within the interaction range with their Lees-Edwards geometry, their
+// contact histories, the contact and surface forces of the shared contact module, the overlap check, and after the
+// move the histories stored back (DESIGN.md section 2, run-time flow).
+#pragma once
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/box.hpp"
+#include "core/particles.hpp"
+#include "dem/contact/contact_law.hpp"
+#include "dem/contact_history.hpp"
+#include "dem/pair_forces.hpp"
+#include "dem/verlet_list.hpp"
+
+namespace suspend {
+
+class ContactStage {
+ public:
+  ContactStage() = default;
+  // range: the largest surface gap at which a pair interacts (contacts, surface forces, lubrication); skin of the
+  // neighbour list; the particles' radii set the history bound; `stored` restores a checkpoint's histories.
+  ContactStage(double range, double skin, const Particles& p, const std::vector<ContactHistory::Entry>& stored);
+
+  // Pairs, histories and forces for the current configuration. Contacts see the velocities in p (the last step's),
+  // the image of j across a sheared face moving at u_j - y_images image_velocity x, and integrate their springs
+  // over last_dt. With `stiffness`, also each pair's tangent stiffnesses (implicit contacts). Returns a message when
+  // an overlap exceeds max_overlap (the caller stops the run with it), else nothing.
+  std::optional<std::string> evaluate(const Particles& p, const Box& box, double image_velocity, const ContactLaw& law,
+                                      double last_dt, bool stiffness, double max_overlap);
+  // After the move: the pair histories go back to the per-particle store.
+  void store_histories() { history_.scatter(active_index_, pair_history_); }
+  void record_motion(const std::vector<Vec3>& nonaffine, double strain_change) {
+    list_.record_motion(nonaffine, strain_change);
+  }
+
+  std::vector<ContactHistory::Entry> histories() const { return history_.entries(); }
+  const std::vector<ActivePair>& pairs() const { return active_; }
+  const PairSums& sums() const { return sums_; }
+  const std::vector<ContactStiffness>& stiffness() const { return stiffness_; }
+  // Force on j of each pair (same order as pairs()); the engines add the implicit contact changes.
+  std::vector<Vec3>& pair_forces() { return pair_force_; }
+  const std::vector<Vec3>& pair_forces() const { return pair_force_; }
+  const VerletList& neighbours() const { return list_; }
+  double range() const { return range_; }
+
+ private:
+  double range_ = 0.0;
+  VerletList list_;
+  ContactHistory history_;
+  std::vector<ActivePair> active_;
+  std::vector<NeighbourPair> active_index_;
+  std::vector<PairHistory> pair_history_;
+  std::vector<Vec3> pair_force_;
+  std::vector<ContactStiffness> stiffness_;
+  PairSums sums_;
+  std::vector<PairSums> scratch_;
+};
+
+// Largest |U - U_inf| over the particles, U_inf(x) = velocity(x) of the caller's flow.
+template <class Flow>
+double max_nonaffine_speed(const Particles& p, const Flow& flow) {
+  double speed = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) speed = std::max(speed, (p.velocity[i] - flow.velocity(p.position[i])).norm());
+  return speed;
+}
+
+}  // namespace suspend

@@ -1,0 +1,68 @@
+// Time-step control of the overdamped step, shared by the pairwise engine and the FCM coupling (DESIGN.md section 4;
+// docs/overdamped.md). Units: time in 1/gammadot_ref, lengths in a_1.
+//
+// Adaptive mode bounds dt by
+//  * the strain increment: |gammadot| dt <= max;
+//  * the non-affine displacement: |U - U_inf| dt <= max_displacement (and, for a law with a finite contact range
+//    such as the Hertz roughness layer h_r, <= a tenth of that range, so a pair cannot cross the layer in a step);
+//  * explicit contacts: the fastest contact relaxation, dt <= stability x 6 pi eta a_min / k (k: stiffness_scale);
+//  * implicit contacts (implicit_contacts.hpp): no stability bound, the stiff modes are unconditionally stable; but
+//    the non-affine displacement stays below `displacement_per_compliance` mean contact compliance lengths
+//    (F_n / (dF_n/d delta), the mean overlap of linear springs): with steps much longer than the overlaps a force
+//    chain's contacts open and close every step (each closing is an explicit, unresolved collision) and lose their
+//    friction history. The step is taken before its velocities are known, from the previous step's speed and
+//    contacts, and may grow by at most a factor `growth` per step; the first step of a run uses the explicit bound.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "dem/contact/contact_law.hpp"
+
+namespace suspend {
+
+struct TimeStepParams {
+  enum class Mode { fixed, adaptive };
+  Mode mode = Mode::adaptive;
+  double fixed = 1.0e-3;             // time step when mode == fixed (1/gammadot)
+  double max_displacement = 2.0e-3;  // adaptive: largest non-affine displacement per step (a_1)
+  double max = 1.0e-2;               // adaptive: largest strain increment per step, gammadot dt
+  double stability = 0.2;            // dt <= stability * (fastest relaxation or oscillation time)
+  bool implicit_contacts = false;    // overdamped: backward-Euler contact springs (implicit_contacts.hpp)
+  double growth = 1.5;               // implicit contacts: largest ratio of one step to the last
+  double displacement_per_compliance = 4.0;  // implicit contacts: displacement bound in mean compliance lengths
+  void validate() const {
+    if (mode == Mode::fixed && !(fixed > 0.0)) throw InputError("run.time_step.fixed must be > 0");
+    if (!(max_displacement > 0.0)) throw InputError("run.time_step.max_displacement must be > 0");
+    if (!(max > 0.0)) throw InputError("run.time_step.max must be > 0");
+    if (!(growth > 1.0)) throw InputError("run.time_step.growth must be > 1");
+    if (!(displacement_per_compliance > 0.0))
+      throw InputError("run.time_step.displacement_per_compliance must be > 0");
+  }
+};
+
+// The contact law's own range (no surface forces): the Hertz roughness height, 0 for laws acting on overlap.
+inline double contact_range(const ContactLaw& law) {
+  return std::visit([](const auto& l) { return l.contact.range(); }, law);
+}
+
+// Adaptive overdamped step for shear rate `rate` and largest non-affine speed `max_speed` (of this step for
+// explicit contacts, of the last one for implicit contacts, whose step precedes the solve); `compliance`: the mean
+// contact compliance length (PairSums::mean_compliance; 0 without contacts).
+inline double overdamped_time_step(const TimeStepParams& ts, const ContactLaw& law, double rate, double max_speed,
+                                   double a_min, double last_dt, double compliance = 0.0) {
+  if (ts.mode == TimeStepParams::Mode::fixed) return ts.fixed;
+  double dt = std::abs(rate) > 0.0 ? ts.max / std::abs(rate) : ts.max;
+  double displacement = ts.max_displacement;
+  const double range = contact_range(law);
+  if (range > 0.0) displacement = std::min(displacement, 0.1 * range);
+  if (ts.implicit_contacts && compliance > 0.0)
+    displacement = std::min(displacement, ts.displacement_per_compliance * compliance);
+  if (max_speed > 0.0) dt = std::min(dt, displacement / max_speed);
+  const double explicit_bound = ts.stability * 6.0 * std::numbers::pi * a_min / stiffness_scale(law);
+  if (!ts.implicit_contacts) return std::min(dt, explicit_bound);
+  return last_dt > 0.0 ? std::min(dt, ts.growth * last_dt) : std::min(dt, explicit_bound);
+}
+
+}  // namespace suspend
