@@ -5,8 +5,18 @@
 // Cholesky), the FCM Stokes solves and the rest; every time is reported as a ratio to one bare FFT Stokes solve
 // (3 forward + 3 inverse r2c transforms of the same grid, FFTW measure plans), measured in the same run.
 // Usage: bench_coupling [steps=10] [warmup=5] [cache_dir=coupling_cache] [krylov_tolerance=1e-4]
-//                       [near_field=cg|cholesky] [preconditioner_cutoff=2.2]
+//                       [near_field=cg|cholesky] [preconditioner_cutoff=2.2] [inner_max_iterations=5]
+//                       [inner_tolerance=1e-2] [min_gap=0.01 (of the initial packing, a)]
+// Deterministic instruction counts of the timed steps only (the bare FFTs and the warm-up are not collected):
+//   OMP_NUM_THREADS=1 valgrind --tool=callgrind --collect-atstart=no build/bin/bench_coupling 4 5 coupling_cache
+//   callgrind_annotate --inclusive=yes callgrind.out.<pid>
 #include <omp.h>
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define SUSPEND_CALLGRIND_TOGGLE() CALLGRIND_TOGGLE_COLLECT
+#else
+#define SUSPEND_CALLGRIND_TOGGLE() ((void)0)
+#endif
 
 #include <cstdio>
 #include <cstdlib>
@@ -28,7 +38,7 @@ int main(int argc, char** argv) {
   const Box box(16, 16, 16);
   PackingParams pp;
   pp.seed = 3;
-  pp.min_gap = 0.01;
+  pp.min_gap = argc > 9 ? std::atof(argv[9]) : 0.01;
   const Packing packing = random_packing(radius, box, pp);
   SimulationState state;
   state.particles.resize(radius.size());
@@ -42,9 +52,11 @@ int main(int argc, char** argv) {
   if (argc > 6) fcm.preconditioner_cutoff = std::atof(argv[6]);
   double t0 = omp_get_wtime();
   FcmSimulation sim(state, box, params, fcm);
-  if (cholesky) {
+  {
     coupling::KrylovParams k = sim.mobility().params();
-    k.near_field = coupling::KrylovParams::NearField::cholesky;
+    if (cholesky) k.near_field = coupling::KrylovParams::NearField::cholesky;
+    if (argc > 7) k.inner_max_iterations = std::atoi(argv[7]);
+    if (argc > 8) k.inner_tolerance = std::atof(argv[8]);
     sim.mobility().set_params(k);
   }
   std::printf("setup (pair table from cache or computed): %.2f s; phi = %.4f, N = %zu, threads = %d\n",
@@ -54,6 +66,7 @@ int main(int argc, char** argv) {
     sim.advance();
   }
   const double contacts0 = sim.contact_seconds(), assembly0 = sim.subgrid_assembly_seconds();
+  const long inner0 = sim.mobility().inner_iterations();
   sim.mobility().reset_timings();
   sim.mobility().solver().reset_timings();
   long iterations = 0, solves = 0;
@@ -71,13 +84,15 @@ int main(int argc, char** argv) {
     }
     bare_total += omp_get_wtime() - t0;
     t0 = omp_get_wtime();
+    SUSPEND_CALLGRIND_TOGGLE();
     sim.evaluate();
+    sim.advance();
+    SUSPEND_CALLGRIND_TOGGLE();
+    total_time += omp_get_wtime() - t0;
     iterations += sim.solver_iterations();
     solves += sim.stokes_solves();
     pairs += sim.corrected_pairs();
     contacts += sim.contact_count();
-    sim.advance();
-    total_time += omp_get_wtime() - t0;
   }
   const double total = total_time / steps;
   const double bare = bare_total / (reps * steps);
@@ -92,8 +107,9 @@ int main(int argc, char** argv) {
               sim.state().strain);
   std::printf("  GMRES iterations %.1f, Stokes solves %.1f, corrected pairs %.0f, contacts %.1f\n",
               double(iterations) / steps, double(solves) / steps, double(pairs) / steps, double(contacts) / steps);
-  std::printf("  near field: %s, inner CG iterations %ld in total, Cholesky analyses %d, failures %d\n",
-              cholesky ? "cholesky" : "block-SGS CG", sim.mobility().inner_iterations(),
+  std::printf("  footprint plans %.1f\n", double(ft.plans) / steps);
+  std::printf("  near field: %s, inner CG iterations %.1f per step, Cholesky analyses %d, failures %d\n",
+              cholesky ? "cholesky" : "block-SGS CG", double(sim.mobility().inner_iterations() - inner0) / steps,
               sim.mobility().preconditioner_analyses(), sim.mobility().preconditioner_failures());
   std::printf("  bare FFT Stokes solve (32^3): %.3f ms\n", 1e3 * bare);
   std::printf("  %-28s %9s %9s\n", "stage", "ms", "/ bare FFT");
@@ -101,6 +117,7 @@ int main(int argc, char** argv) {
   row("total step", total);
   row("contacts", contact);
   row("sub-grid (assembly+apply)", subgrid);
+  row("  of which assembly", (sim.subgrid_assembly_seconds() - assembly0) / steps);
   row("near-field preconditioner", precond);
   row("FCM Stokes solves", stokes);
   row("  of which plan (footprints)", ft.plan / steps);

@@ -11,7 +11,10 @@
 // particles stay within SolverOptions::near_field_reuse_displacement); a 6th argument sets the near-field cutoff,
 // a 7th the reuse displacement.
 // mode "mobility_near_field": the same for the near-field preconditioner only.
-// mode "stokes" with a 6th argument: the Stokes solves with that truncation (in monopole widths).
+// mode "stokes" with a 6th argument: the Stokes solves with that truncation (in monopole widths); a 7th sets
+// SolverOptions::split_dipole_width (spectral splitting), an 8th the grid spacing in radii (default 0.5: the box is
+// then 64 h at 64^3 and holds proportionally fewer spheres at the same phi).
+// Example, h = a/4 with and without splitting: fcm_solve_once 64 0.4 3 stokes 4.5 0 0.25 / ... stokes 5 1.0 0.25
 #include <omp.h>
 
 #include <cstdio>
@@ -30,7 +33,9 @@ int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 64;
   const double phi = argc > 2 ? std::atof(argv[2]) : 0.4;
   const int solves = argc > 3 ? std::atoi(argv[3]) : 1;
-  const double l = 0.5 * n;
+  const bool stokes_mode = argc > 5 && std::strcmp(argv[4], "stokes") == 0;
+  const double h = stokes_mode && argc > 7 ? std::atof(argv[7]) : 0.5;
+  const double l = h * n;
   const int np = static_cast<int>(phi * l * l * l / (4.0 / 3.0 * std::numbers::pi));
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0.0, l), g(-1.0, 1.0);
@@ -48,7 +53,8 @@ int main(int argc, char** argv) {
   }
   SolverOptions opt;
   opt.planning = FftPlanning::estimate;
-  if (argc > 5 && std::strcmp(argv[4], "stokes") == 0) opt.truncation_widths = std::atof(argv[5]);
+  if (stokes_mode) opt.truncation_widths = std::atof(argv[5]);
+  if (stokes_mode && argc > 6) opt.split_dipole_width = std::atof(argv[6]);
   const bool near_only = argc > 4 && std::strcmp(argv[4], "mobility_near_field") == 0;
   if (argc > 4 && (std::strcmp(argv[4], "mobility") == 0 || near_only)) {
     if (argc > 5) opt.near_field_cutoff = std::atof(argv[5]);

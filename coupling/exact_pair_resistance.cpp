@@ -10,10 +10,13 @@
 namespace suspend::coupling {
 namespace {
 
-hydro::ResistanceScalars model(const hydro::LubricationCoefficients& c, double xi) {
-  hydro::ResistanceScalars s = hydro::lubrication_scalars(c, xi);
+hydro::ResistanceScalars model(const hydro::LubricationCoefficients& c, double xi, double log_inv_xi) {
+  hydro::ResistanceScalars s = hydro::lubrication_scalars(c, xi, log_inv_xi);
   hydro::add_stokes_drag(s);
   return s;
+}
+hydro::ResistanceScalars model(const hydro::LubricationCoefficients& c, double xi) {
+  return model(c, xi, std::log(1.0 / xi));
 }
 
 }  // namespace
@@ -55,9 +58,13 @@ double ExactPairResistance::scaled_gap(double gap) const {
 void ExactPairResistance::scalars(double gap, hydro::ResistanceScalars& from_i,
                                   hydro::ResistanceScalars& from_j) const {
   const double xi = scaled_gap(gap);
-  from_i = model(from_i_, xi);
-  from_j = model(from_j_, xi);
-  if (remainder_xi_.empty()) return;
+  const double log_inv_xi = std::log(1.0 / xi);  // (what lubrication_scalars(c, xi) takes: the same bits)
+  from_i = model(from_i_, xi, log_inv_xi);
+  if (remainder_xi_.empty()) {
+    from_j = model(from_j_, xi, log_inv_xi);
+    return;
+  }
+  from_j = from_i;  // tabulated = equal spheres: the same coefficients from either side
   // Linear interpolation of the bounded remainder in xi, held constant outside the table.
   const auto it = std::upper_bound(remainder_xi_.begin(), remainder_xi_.end(), xi);
   std::size_t k1 = static_cast<std::size_t>(it - remainder_xi_.begin());

@@ -135,6 +135,16 @@ FcmPairTable::FcmPairTable(const FcmPairTableParams& params) : params_(params) {
     from_i_.push_back(fi);
     from_j_.push_back(fj);
   }
+  pack();
+}
+
+void FcmPairTable::pack() {
+  packed_.resize(s_.size());
+  for (std::size_t k = 0; k < s_.size(); ++k)
+    for (std::size_t q = 0; q < stored.size(); ++q) {
+      packed_[k][q] = from_i_[k].*stored[q];
+      packed_[k][stored.size() + q] = from_j_[k].*stored[q];
+    }
 }
 
 std::string FcmPairTable::file_name() const {
@@ -155,12 +165,15 @@ void FcmPairTable::scalars(double s, hydro::ResistanceScalars& from_i, hydro::Re
   const double t2 = t * t, t3 = t2 * t;
   const double w0 = 0.5 * (-t3 + 2.0 * t2 - t), w1 = 0.5 * (3.0 * t3 - 5.0 * t2 + 2.0);
   const double w2 = 0.5 * (-3.0 * t3 + 4.0 * t2 + t), w3 = 0.5 * (t3 - t2);
+  const std::array<double, 32>&p0 = packed_[k0], &p1 = packed_[k1], &p2 = packed_[k2], &p3 = packed_[k3];
+  std::array<double, 32> v;
+  for (std::size_t q = 0; q < v.size(); ++q) v[q] = w0 * p0[q] + w1 * p1[q] + w2 * p2[q] + w3 * p3[q];
   from_i = {};
   from_j = {};
   from_i.xi = from_j.xi = s - 2.0;
-  for (auto f : stored) {
-    from_i.*f = w0 * from_i_[k0].*f + w1 * from_i_[k1].*f + w2 * from_i_[k2].*f + w3 * from_i_[k3].*f;
-    from_j.*f = w0 * from_j_[k0].*f + w1 * from_j_[k1].*f + w2 * from_j_[k2].*f + w3 * from_j_[k3].*f;
+  for (std::size_t q = 0; q < stored.size(); ++q) {
+    from_i.*stored[q] = v[q];
+    from_j.*stored[q] = v[stored.size() + q];
   }
 }
 
@@ -219,6 +232,7 @@ bool FcmPairTable::read(const std::string& path, const FcmPairTableParams& expec
   s_ = std::move(s);
   from_i_ = std::move(fi);
   from_j_ = std::move(fj);
+  pack();
   return true;
 }
 

@@ -16,6 +16,7 @@
 // s') and cached as a text file in cache_dir whose header holds every parameter; a cache with other parameters is
 // recomputed and replaced, never used. Units: eta = 1, lengths in a_1.
 #pragma once
+#include <array>
 #include <string>
 #include <vector>
 
@@ -62,9 +63,13 @@ class FcmPairTable {
   bool read(const std::string& path, const FcmPairTableParams& expected);
 
  private:
+  void pack();  // fills packed_ from from_i_, from_j_
+
   FcmPairTableParams params_;
   std::vector<double> s_;
   std::vector<hydro::ResistanceScalars> from_i_, from_j_;
+  // The 16 stored functions from i then from j, per node, contiguous: the interpolation is one vector loop.
+  std::vector<std::array<double, 32>> packed_;
 };
 
 }  // namespace suspend::coupling

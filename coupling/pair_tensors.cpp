@@ -8,15 +8,22 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-// Force of strain E through G^{ba}_{jki} E_jk: X (d.E.d) d + 2 Y (E d - (d.E.d) d).
-Vec3 strain_force(double scale, const Vec3& d, double x, double y, const Mat3& e) {
-  const Vec3 ed = e * d;
-  const double ded = d.dot(ed);
-  return scale * (x * ded * d + 2.0 * y * (ed - ded * d));
+// The strain E seen along d = n: E n and n.E.n (along -n: -E n and the same n.E.n).
+struct StrainAlong {
+  Vec3 en;
+  double ded;
+  Vec3 cross;  // n x (E n)
+  StrainAlong(const Vec3& n, const Mat3& e) : en(e * n), ded(n.dot(en)), cross(n.cross(en)) {}
+};
+
+// Force of strain E through G^{ba}_{jki} E_jk along d = n: X (d.E.d) d + 2 Y (E d - (d.E.d) d); along -n it
+// changes sign (both terms are odd in d).
+Vec3 strain_force(double scale, const Vec3& n, double x, double y, const StrainAlong& e) {
+  return scale * (x * e.ded * n + 2.0 * y * (e.en - e.ded * n));
 }
 
-// Torque of strain E through H^{ba}_{jki} E_jk: 2 Y d x (E d).
-Vec3 strain_torque(double scale, const Vec3& d, double y, const Mat3& e) { return scale * 2.0 * y * d.cross(e * d); }
+// Torque of strain E through H^{ba}_{jki} E_jk: 2 Y d x (E d), even in d.
+Vec3 strain_torque(double scale, double y, const StrainAlong& e) { return scale * 2.0 * y * e.cross; }
 
 }  // namespace
 
@@ -53,13 +60,94 @@ Matrix12 pair_resistance(double a_i, double a_j, const Vec3& n, const Resistance
 Vector12 pair_strain_forces(double a_i, double a_j, const Vec3& n, const ResistanceScalars& si,
                             const ResistanceScalars& sj, const Mat3& e_i, const Mat3& e_j) {
   Vector12 f;
-  const Vec3 m = -n;
+  // Seen from j, d = -n: the forces flip sign, the torques do not.
+  const StrainAlong ei(n, e_i), ej(n, e_j);
   const double fg_i = 4.0 * pi * a_i * a_i, fg_j = 4.0 * pi * a_j * a_j;
   const double fh_i = 8.0 * pi * a_i * a_i * a_i, fh_j = 8.0 * pi * a_j * a_j * a_j;
-  f.segment<3>(0) = strain_force(fg_i, n, si.x11g, si.y11g, e_i) + strain_force(fg_j, m, sj.x12g, sj.y12g, e_j);
-  f.segment<3>(6) = strain_force(fg_j, m, sj.x11g, sj.y11g, e_j) + strain_force(fg_i, n, si.x12g, si.y12g, e_i);
-  f.segment<3>(3) = strain_torque(fh_i, n, si.y11h, e_i) + strain_torque(fh_j, m, sj.y12h, e_j);
-  f.segment<3>(9) = strain_torque(fh_j, m, sj.y11h, e_j) + strain_torque(fh_i, n, si.y12h, e_i);
+  f.segment<3>(0) = strain_force(fg_i, n, si.x11g, si.y11g, ei) - strain_force(fg_j, n, sj.x12g, sj.y12g, ej);
+  f.segment<3>(6) = strain_force(fg_i, n, si.x12g, si.y12g, ei) - strain_force(fg_j, n, sj.x11g, sj.y11g, ej);
+  f.segment<3>(3) = strain_torque(fh_i, si.y11h, ei) + strain_torque(fh_j, sj.y12h, ej);
+  f.segment<3>(9) = strain_torque(fh_j, sj.y11h, ej) + strain_torque(fh_i, si.y12h, ei);
+  return f;
+}
+
+PairResistanceCoefficients pair_resistance_coefficients(double a_i, double a_j, const ResistanceScalars& si,
+                                                        const ResistanceScalars& sj) {
+  const double fa_i = 6.0 * pi * a_i, fa_j = 6.0 * pi * a_j;
+  const double fb_i = 4.0 * pi * a_i * a_i, fb_j = 4.0 * pi * a_j * a_j;
+  const double fc_i = 8.0 * pi * a_i * a_i * a_i, fc_j = 8.0 * pi * a_j * a_j * a_j;
+  PairResistanceCoefficients c;
+  c.ya11 = fa_i * si.y11a;
+  c.xa11 = fa_i * (si.x11a - si.y11a);
+  c.ya12 = fa_i * si.y12a;
+  c.xa12 = fa_i * (si.x12a - si.y12a);
+  c.ya22 = fa_j * sj.y11a;
+  c.xa22 = fa_j * (sj.x11a - sj.y11a);
+  c.yc11 = fc_i * si.y11c;
+  c.xc11 = fc_i * (si.x11c - si.y11c);
+  c.yc12 = fc_i * si.y12c;
+  c.xc12 = fc_i * (si.x12c - si.y12c);
+  c.yc22 = fc_j * sj.y11c;
+  c.xc22 = fc_j * (sj.x11c - sj.y11c);
+  c.b11 = fb_i * si.y11b;
+  c.b12 = fb_i * si.y12b;
+  c.b22 = fb_j * sj.y11b;
+  c.b21 = fb_j * sj.y12b;
+  return c;
+}
+
+Matrix12 pair_resistance(const PairResistanceCoefficients& c, const Vec3& n) {
+  Matrix12 r;
+  const Mat3 nn = n * n.transpose();
+  const Mat3 id = Mat3::Identity();
+  Mat3 nx;
+  nx << 0.0, -n.z(), n.y(), n.z(), 0.0, -n.x(), -n.y(), n.x(), 0.0;
+  r.block<3, 3>(0, 0) = c.ya11 * id + c.xa11 * nn;
+  r.block<3, 3>(6, 6) = c.ya22 * id + c.xa22 * nn;
+  r.block<3, 3>(0, 6) = c.ya12 * id + c.xa12 * nn;
+  r.block<3, 3>(6, 0) = r.block<3, 3>(0, 6);
+  r.block<3, 3>(3, 3) = c.yc11 * id + c.xc11 * nn;
+  r.block<3, 3>(9, 9) = c.yc22 * id + c.xc22 * nn;
+  r.block<3, 3>(3, 9) = c.yc12 * id + c.xc12 * nn;
+  r.block<3, 3>(9, 3) = r.block<3, 3>(3, 9);
+  r.block<3, 3>(3, 0) = -c.b11 * nx;
+  r.block<3, 3>(3, 6) = -c.b12 * nx;
+  r.block<3, 3>(9, 6) = c.b22 * nx;
+  r.block<3, 3>(9, 0) = c.b21 * nx;
+  r.block<3, 3>(0, 3) = r.block<3, 3>(3, 0).transpose();
+  r.block<3, 3>(6, 3) = r.block<3, 3>(3, 6).transpose();
+  r.block<3, 3>(6, 9) = r.block<3, 3>(9, 6).transpose();
+  r.block<3, 3>(0, 9) = r.block<3, 3>(9, 0).transpose();
+  return r;
+}
+
+Vector12 pair_resistance_product(const PairResistanceCoefficients& c, const Vec3& n, const Vector12& v) {
+  // Plain scalars (no Eigen temporaries): this runs for every corrected pair in every Krylov iteration.
+  // (y I + x n n) u = y u + x (n.u) n, and [n]_x u = n x u (pair_resistance's blocks).
+  const double n0 = n.x(), n1 = n.y(), n2 = n.z();
+  double x[12];
+  for (int k = 0; k < 12; ++k) x[k] = v(k);
+  const double* ui = x;
+  const double* wi = x + 3;
+  const double* uj = x + 6;
+  const double* wj = x + 9;
+  const auto dot = [&](const double* u) { return n0 * u[0] + n1 * u[1] + n2 * u[2]; };
+  const double nui = dot(ui), nwi = dot(wi), nuj = dot(uj), nwj = dot(wj);
+  const double cui[3] = {n1 * ui[2] - n2 * ui[1], n2 * ui[0] - n0 * ui[2], n0 * ui[1] - n1 * ui[0]};
+  const double cwi[3] = {n1 * wi[2] - n2 * wi[1], n2 * wi[0] - n0 * wi[2], n0 * wi[1] - n1 * wi[0]};
+  const double cuj[3] = {n1 * uj[2] - n2 * uj[1], n2 * uj[0] - n0 * uj[2], n0 * uj[1] - n1 * uj[0]};
+  const double cwj[3] = {n1 * wj[2] - n2 * wj[1], n2 * wj[0] - n0 * wj[2], n0 * wj[1] - n1 * wj[0]};
+  // Axial parts along n of the four outputs.
+  const double af_i = c.xa11 * nui + c.xa12 * nuj, af_j = c.xa12 * nui + c.xa22 * nuj;
+  const double at_i = c.xc11 * nwi + c.xc12 * nwj, at_j = c.xc12 * nwi + c.xc22 * nwj;
+  const double nn[3] = {n0, n1, n2};
+  Vector12 f;
+  for (int k = 0; k < 3; ++k) {
+    f(k) = c.ya11 * ui[k] + c.ya12 * uj[k] + af_i * nn[k] + c.b11 * cwi[k] - c.b21 * cwj[k];
+    f(3 + k) = c.yc11 * wi[k] + c.yc12 * wj[k] + at_i * nn[k] - c.b11 * cui[k] - c.b12 * cuj[k];
+    f(6 + k) = c.ya12 * ui[k] + c.ya22 * uj[k] + af_j * nn[k] + c.b12 * cwi[k] - c.b22 * cwj[k];
+    f(9 + k) = c.yc12 * wi[k] + c.yc22 * wj[k] + at_j * nn[k] + c.b21 * cui[k] + c.b22 * cuj[k];
+  }
   return f;
 }
 

@@ -100,7 +100,7 @@ void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const st
     lever_i_.push_back(g.lever_i());
     lever_j_.push_back(g.lever_j());
     s_.push_back(s);
-    delta_r_.push_back(pair_resistance(g.a_i, g.a_j, g.n, si, sj));
+    delta_r_.push_back(pair_resistance_coefficients(g.a_i, g.a_j, si, sj));
     delta_strain_.push_back(pair_strain_forces(g.a_i, g.a_j, g.n, si, sj, e_hat, e_hat));
   }
 }
@@ -108,7 +108,12 @@ void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const st
 Vector12 SubgridLubrication::pair_forces(std::size_t k, const Eigen::VectorXd& dv, double shear_rate) const {
   Vector12 v;
   v << dv.segment<6>(6 * static_cast<Eigen::Index>(links_[k].i)), dv.segment<6>(6 * static_cast<Eigen::Index>(links_[k].j));
-  return -delta_r_[k] * v + shear_rate * delta_strain_[k];
+  Vector12 f = shear_rate * delta_strain_[k] - pair_resistance_product(delta_r_[k], normal_[k], v);
+  if (!link_contact_.empty() && link_contact_[k] >= 0) {  // the implicit contact step's resistance dt C^T S C
+    const ContactStep& c = contact_[link_contact_[k]];
+    f -= c.c.transpose() * (c.s * (c.c * v));
+  }
+  return f;
 }
 
 void SubgridLubrication::add_velocity_forces(const Eigen::VectorXd& dv, Eigen::VectorXd& f) const {
@@ -139,7 +144,8 @@ void SubgridLubrication::add_contact_steps(const std::vector<ActivePair>& pairs,
     const std::size_t k = link_pair_[l];
     if (!stiffness[k].any()) continue;
     const ContactStep c = contact_step(pairs[k].geometry, positions[pairs[k].i], stiffness[k], dt, unit_shear);
-    delta_r_[l] += c.resistance();
+    // (Its resistance is applied from `contact_` in pair_forces and resistance_matrix: delta_r_ holds the
+    // lubrication blocks' coefficients only.)
     delta_strain_[l] += c.ambient_force();
     link_contact_[l] = static_cast<std::int32_t>(contact_.size());
     contact_.push_back(c);
@@ -194,9 +200,11 @@ void SubgridLubrication::resistance_matrix(const std::vector<double>& radius, do
   std::size_t c = 0;
   for (std::size_t k = 0; k < links_.size(); ++k) {
     if (!(s_[k] < s_max)) continue;
-    diag[links_[k].i] += delta_r_[k].block<6, 6>(0, 0);
-    diag[links_[k].j] += delta_r_[k].block<6, 6>(6, 6);
-    coupling[c++] = delta_r_[k].block<6, 6>(0, 6);
+    Matrix12 r = pair_resistance(delta_r_[k], normal_[k]);
+    if (!link_contact_.empty() && link_contact_[k] >= 0) r += contact_[link_contact_[k]].resistance();
+    diag[links_[k].i] += r.block<6, 6>(0, 0);
+    diag[links_[k].j] += r.block<6, 6>(6, 6);
+    coupling[c++] = r.block<6, 6>(0, 6);
   }
 }
 

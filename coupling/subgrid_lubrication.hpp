@@ -98,7 +98,10 @@ class SubgridLubrication {
   std::vector<Vec3> normal_;
   std::vector<double> lever_i_, lever_j_, s_;
   std::vector<BlockLink> near_links_;
-  std::vector<Matrix12> delta_r_;
+  // Delta_R of each pair kept as its block coefficients (pair_resistance_product applies it; the 12 x 12 matrices
+  // would be 1152 bytes per pair to stream through every application). The implicit contact step's resistance
+  // dt C^T S C of a contact pair is not folded in: pair_forces and resistance_matrix add it from contact_.
+  std::vector<PairResistanceCoefficients> delta_r_;
   std::vector<Vector12> delta_strain_;  // for unit shear rate
   std::vector<std::uint32_t> link_pair_;  // index of each link's pair in the assembled list
   std::size_t pair_count_ = 0;

@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cstring>
 #include <mutex>
 
 #include "core/error.hpp"
@@ -58,6 +59,28 @@ VectorFft::~VectorFft() {
     if (p != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(p));
   fftw_free(real_);
   fftw_free(spectrum_);
+}
+
+// Plain 32-byte stores rather than memset (which GCC makes of a zeroing loop): the same speed, and callgrind counts
+// them as what they are (a `rep stosb` it counts once per byte, 6.3 M "instructions" per 64^3 field, docs/fcm.md).
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((optimize("no-tree-loop-distribute-patterns")))
+#endif
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && \
+    !defined(__SANITIZE_THREAD__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
+void VectorFft::zero_real() {
+  typedef double Lanes __attribute__((vector_size(32)));
+  const std::ptrdiff_t size = static_cast<std::ptrdiff_t>(3 * real_size_);
+  const std::ptrdiff_t vectors = size / 4;
+  double* r = real_;
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < vectors; ++i) {
+    const Lanes z{};
+    std::memcpy(r + 4 * i, &z, sizeof z);
+  }
+  for (std::ptrdiff_t i = 4 * vectors; i < size; ++i) r[i] = 0.0;
 }
 
 void VectorFft::forward(FftScaling scaling) {

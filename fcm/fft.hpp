@@ -30,6 +30,8 @@ class VectorFft {
     return {spectrum_ + component * complex_size_, complex_size_};
   }
   double* real_data() { return real_; }
+  // Sets the three real components to zero (OpenMP-parallel, plain vector stores).
+  void zero_real();
 
   // real -> spectrum, all three components. spectrum = scaling * sum_x f(x) exp(-i k x).
   void forward(FftScaling scaling);

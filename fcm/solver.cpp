@@ -42,6 +42,8 @@ void SolverOptions::validate() const {
   if (max_rigidity_iterations < 1) throw InputError("fcm.max_rigidity_iterations must be at least 1");
   if (!(near_field_reuse_displacement >= 0.0 && near_field_reuse_displacement <= 1.0))
     throw InputError("fcm.near_field_reuse_displacement must lie in [0, 1] (radii)");
+  if (!(split_dipole_width == 0.0 || (split_dipole_width >= 0.3 && split_dipole_width <= 5.0)))
+    throw InputError("fcm.split_dipole_width must be 0 (no spectral splitting) or lie in [0.3, 5] grid spacings");
   if (!(near_field_cutoff >= 1.0 && near_field_cutoff <= 5.0))
     throw InputError("fcm.near_field_cutoff must lie in [1, 5] (centre distance over the sum of the radii)");
 }
@@ -62,21 +64,41 @@ void Solver::place(std::span<const Vec3> positions, std::span<const double> radi
   if (radii.size() != positions.size()) throw InputError("fcm: one radius per particle is required");
   if (!std::isfinite(shear_offset)) throw InputError("fcm: shear offset must be finite");
   // Only the wrapped offset matters: D and D + L_x describe the same lattice.
-  grid_.shear_fraction = wrap_centered(shear_offset, grid_.length.x()) / grid_.length.y();
+  const double shear_fraction = wrap_centered(shear_offset, grid_.length.x()) / grid_.length.y();
+  // The same configuration as last time (bitwise): the plan is still valid.
+  if (plan_current_ && shear_fraction == grid_.shear_fraction && positions.size() == placed_positions_.size() &&
+      std::equal(positions.begin(), positions.end(), placed_positions_.begin(),
+                 [](const Vec3& a, const Vec3& b) { return a.x() == b.x() && a.y() == b.y() && a.z() == b.z(); }) &&
+      std::equal(radii.begin(), radii.end(), placed_radii_.begin()))
+    return;
+  plan_current_ = false;
+  grid_.shear_fraction = shear_fraction;
+  // Split width c: the smallest particle's dipole is spread with tau_D = split_dipole_width h.
+  double a_min = radii.empty() ? 0.0 : radii[0];
+  for (std::size_t i = 0; i < radii.size(); ++i) {
+    if (!(radii[i] > 0.0)) throw InputError("fcm: particle radius must be positive (particle " + std::to_string(i) + ")");
+    a_min = std::min(a_min, radii[i]);
+  }
+  const double tau_d = options_.split_dipole_width * grid_.spacing.maxCoeff(), sigma_d = dipole_width(a_min);
+  split_ = options_.split_dipole_width > 0.0 && sigma_d > tau_d ? std::sqrt(sigma_d * sigma_d - tau_d * tau_d) : 0.0;
+  window_.update(grid_, split_);
   envelopes_.resize(positions.size());
   const double min_length = grid_.length.minCoeff();
   for (std::size_t i = 0; i < positions.size(); ++i) {
-    if (!(radii[i] > 0.0)) throw InputError("fcm: particle radius must be positive (particle " + std::to_string(i) + ")");
     if (!positions[i].allFinite()) throw InputError("fcm: particle position is not finite (particle " + std::to_string(i) + ")");
-    envelopes_[i] = make_envelope(positions[i], radii[i], options_.truncation_widths);
+    envelopes_[i] = make_envelope(positions[i], radii[i], options_.truncation_widths, split_);
     if (2.0 * envelopes_[i].support >= min_length)
       throw InputError("fcm: box too small for the envelope of particle " + std::to_string(i) +
-                       " (needs L > 2 * truncation_widths * a / sqrt(pi))");
+                       " (needs L > 2 * truncation_widths * tau_M)");
   }
   // The footprints are fixed for the whole solve: every Stokes solve of the rigidity CG reuses them.
   const double t0 = omp_get_wtime();
   plan_support(grid_, envelopes_, grid_order(grid_, envelopes_), plan_);
   timings_.plan += omp_get_wtime() - t0;
+  ++timings_.plans;
+  placed_positions_.assign(positions.begin(), positions.end());
+  placed_radii_.assign(radii.begin(), radii.end());
+  plan_current_ = true;
 }
 
 void Solver::stokes_solve(std::span<const Vec3> forces, std::span<const Mat3> dipoles, std::span<Vec3> velocities,
@@ -84,16 +106,14 @@ void Solver::stokes_solve(std::span<const Vec3> forces, std::span<const Mat3> di
   const std::size_t stride = fft_->real_size();
   double* field = fft_->real_data();
   const double t0 = omp_get_wtime();
-  const std::ptrdiff_t size = static_cast<std::ptrdiff_t>(3 * stride);
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t i = 0; i < size; ++i) field[i] = 0.0;
+  fft_->zero_real();
   spread(plan_, forces, dipoles, field, stride);
   const double t1 = omp_get_wtime();
   timings_.spread += t1 - t0;
   fft_->forward(FftScaling::none);
   const double t2 = omp_get_wtime();
   // The inverse FFT is unnormalised: fold its 1/N into the Green's function (eta = 1).
-  apply_stokes_green(grid_, *fft_, 1.0 / static_cast<double>(stride));
+  apply_stokes_green(grid_, *fft_, 1.0 / static_cast<double>(stride), &window_);
   const double t3 = omp_get_wtime();
   fft_->inverse(FftScaling::none);
   const double t4 = omp_get_wtime();

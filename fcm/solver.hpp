@@ -23,6 +23,7 @@
 #include "fcm/rigidity_preconditioner.hpp"
 #include "fcm/sheared_grid.hpp"
 #include "fcm/spreading.hpp"
+#include "fcm/stokes_operator.hpp"
 #include "fcm/support_plan.hpp"
 
 namespace suspend::fcm {
@@ -32,9 +33,16 @@ namespace suspend::fcm {
 enum class RigidityPreconditioner { jacobi, near_field };
 
 struct SolverOptions {
-  // Gaussians are cut off at this many monopole widths sigma_M (the dipole, narrower, at 1.24x as many of its
-  // own widths). 4.5 keeps the truncation bias below 1e-4 (docs/fcm.md).
+  // Gaussians are cut off at this many monopole widths (of the Gaussian put on the grid: tau_M with spectral
+  // splitting, sigma_M without). 4.5 keeps the truncation bias near 1e-4 (docs/fcm.md).
   double truncation_widths = 4.5;
+  // Spectral splitting (as in spectral Ewald / Gaussian-gridding NUFFT): the envelopes are spread and
+  // interpolated with the narrower Gaussians tau^2 = sigma^2 - c^2 and the Green's function is multiplied by
+  // exp(-k^2 c^2) (Delta_sigma = Delta_tau * Delta_c), so the operator is FCM with sigma_M, sigma_D up to the
+  // aliasing of the narrower Gaussians on the grid, on fewer nodes. c is one value for all particles, chosen so
+  // that the smallest particle's dipole is spread with tau_D = split_dipole_width h (h the largest grid spacing);
+  // no splitting where sigma_D is already narrower, or with 0.
+  double split_dipole_width = 0.0;
   bool rigid = true;                  // solve the stresslets (false: force- and torque-only FCM, S = 0)
   double rigidity_tolerance = 1e-6;   // relative residual of the particle rate of strain
   int max_rigidity_iterations = 200;
@@ -68,10 +76,12 @@ struct MobilityResult {
 };
 
 // Wall-clock seconds spent in each stage since construction or reset_timings(). `plan` (tabulating the envelope
-// footprints, support_plan.hpp) is paid once per configuration, the others once per Stokes solve (`solves`).
+// footprints, support_plan.hpp) is paid once per configuration (`plans`), the others once per Stokes solve
+// (`solves`).
 struct SolveTimings {
   double plan = 0.0, spread = 0.0, fft = 0.0, green = 0.0, interpolate = 0.0;
   int solves = 0;
+  int plans = 0;
   double precondition = 0.0;  // building the near-field preconditioner (once per configuration) and applying it
 };
 
@@ -83,6 +93,8 @@ class Solver {
   MobilityResult solve(const MobilityProblem& problem);
 
   // One Stokes solve without ambient flow or rigidity (any of the spans may be empty).
+  // solve() and apply() keep the footprint plan of the last configuration: a call with bitwise the same positions,
+  // radii and wrapped Lees-Edwards offset reuses it (e.g. the Stokes solves of one coupled time step).
   Disturbance apply(std::span<const Vec3> positions, std::span<const double> radii, std::span<const Vec3> forces,
                     std::span<const Vec3> torques, std::span<const Mat3> stresslets, double shear_offset);
 
@@ -92,10 +104,13 @@ class Solver {
 
   const ShearedGrid& grid() const { return grid_; }
   const SolverOptions& options() const { return options_; }
+  // The split width c of the configuration last placed (0: no splitting).
+  double split_width() const { return split_; }
   const SolveTimings& timings() const { return timings_; }
   void reset_timings() { timings_ = {}; }
 
  private:
+  // Envelopes and footprint plan of the configuration; a no-op if it equals the one last placed.
   void place(std::span<const Vec3> positions, std::span<const double> radii, double shear_offset);
   // Whether the near-field factor was built for a configuration within near_field_reuse_displacement of pb's.
   bool near_field_is_current(const MobilityProblem& pb) const;
@@ -107,7 +122,12 @@ class Solver {
   ShearedGrid grid_;
   std::unique_ptr<VectorFft> fft_;
   std::vector<Envelope> envelopes_;
+  double split_ = 0.0;        // c of the placed configuration
+  SplitWindow window_;        // exp(-c^2 k^2) on the grid's modes
   SupportPlan plan_;  // envelope footprints of the current configuration, in spatially sorted order
+  bool plan_current_ = false;         // plan_ holds placed_positions_, placed_radii_ at grid_.shear_fraction
+  std::vector<Vec3> placed_positions_;
+  std::vector<double> placed_radii_;
   NearFieldPreconditioner near_field_;
   std::vector<Vec3> near_field_positions_;  // configuration the near-field factor was built for
   std::vector<double> near_field_radii_;

@@ -2,6 +2,8 @@
 
 #include <omp.h>
 
+#include <atomic>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -9,13 +11,18 @@
 #include <utility>
 #include <vector>
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 #include "fcm/envelope.hpp"
 
 namespace suspend::fcm {
 
-Envelope make_envelope(const Vec3& centre, double radius, double truncation_widths) {
-  const double sm = monopole_width(radius);
-  return {centre, sm, dipole_width(radius), truncation_widths * sm};
+Envelope make_envelope(const Vec3& centre, double radius, double truncation_widths, double split) {
+  const double sm = monopole_width(radius), sd = dipole_width(radius);
+  const double tm = std::sqrt(sm * sm - split * split), td = std::sqrt(sd * sd - split * split);
+  return {centre, tm, td, truncation_widths * tm};
 }
 
 Mat3 dipole_tensor(const Vec3& torque, const Mat3& stresslet) {
@@ -51,23 +58,31 @@ std::pair<int, int> balanced_slab(const std::vector<std::size_t>& plane_nodes, i
   return {boundary(t), boundary(t + 1)};
 }
 
-// Row kernels. A row's node weights are w_M = yz_m m[i] and w_D = yz_d d[i] (support_plan.hpp); with the
-// row's constants folded into coefficients, a node update is three multiply-adds per component:
+// Row kernels. A row's node weights are w_M = zm m[i] and w_D = zd d[i] (support_plan.hpp: the tables carry the
+// y factor, the plane the z factor); with the plane's and row's constants folded into coefficients, a node update
+// is three multiply-adds per component:
 //   f_c[i] += a_c m[i] + b_c d[i] + c_c dd[i],
-// a = yz_m F, b = gs_c1 ydy + gs_c2 ydz, c = yz_d gs_c0, gs = -G / sD^2 (d_j Delta_D = -d_j/sD^2 Delta_D).
-// Rows are short (~7 nodes at h = a/2), so the row loop is instantiated for every length up to kMaxFixed: the
-// compiler unrolls and vectorises each one without loop prologue or remainder.
+// a = zm F, b = gs_c1 zd dy + gs_c2 zd dz, c = zd gs_c0, gs = -G / sD^2 (d_j Delta_D = -d_j/sD^2 Delta_D): a and c
+// are per plane, b per row. Rows are short (~7 nodes at h = a/2), so the row loop is instantiated for every length
+// up to kMaxFixed: the compiler unrolls and vectorises each one without loop prologue or remainder.
 constexpr int kMaxFixed = 16;
 
 // On x86-64 with GCC the per-particle loops are also compiled for AVX2 + FMA and chosen at load time (ifunc), so
 // the portable baseline binary still uses the 4-wide units where the CPU has them. Not under the thread or address
 // sanitizer: their instrumentation of the ifunc resolver runs before the sanitizer runtime is up.
+// Where the CPU also has AVX-512, 8-lane kernels with masked loads and stores (below) replace them: a row of up to
+// 8 nodes is one masked vector, with no per-length instances and no tail handling.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && \
     !defined(__SANITIZE_THREAD__) && !defined(__SANITIZE_ADDRESS__)
 #define SUSPEND_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#define SUSPEND_WIDE_KERNELS 1
+#define SUSPEND_AVX512 __attribute__((target("avx512f,avx512vl,avx512dq,avx2,fma")))
 #else
 #define SUSPEND_SIMD_CLONES
+#define SUSPEND_WIDE_KERNELS 0
 #endif
+
+std::atomic<bool> wide_kernels_on{true};
 
 typedef double Lanes __attribute__((vector_size(32)));
 
@@ -79,6 +94,21 @@ template <int N>
 }
 
 [[gnu::always_inline]] inline void broadcast(double x, Lanes& v) { v = Lanes{x, x, x, x}; }
+
+// What a kernel needs of one visit of the plan.
+struct Visit {
+  const SupportPlane* planes;
+  const SupportPlane* planes_end;
+  const SupportRow* rows;
+  const double* tables;
+  int width;
+  const double* dy;  // of y row j
+};
+
+Visit visit_of(const SupportPlan& plan, std::size_t k) {
+  return {plan.planes.data() + plan.plane_begin[k], plan.planes.data() + plan.plane_end[k], plan.rows.data(),
+          plan.tables.data(), plan.width[k], plan.dy.data() + plan.dy_begin[k]};
+}
 
 struct RowCoefficients {
   double a[3], b[3], c[3];
@@ -146,20 +176,39 @@ template <bool Monopole, int N>
   }
 }
 
-// Calls f(std::integral_constant<int, N>) with N = count for count <= kMaxFixed, else N = 0 (any length).
-template <class F, int... I>
-[[gnu::always_inline]] inline void with_fixed_length(int count, F&& f, std::integer_sequence<int, I...>) {
-  const bool fixed = ((count == I + 1 ? (f(std::integral_constant<int, I + 1>{}), true) : false) || ...);
-  if (!fixed) f(std::integral_constant<int, 0>{});
+// Calls f(std::integral_constant<int, N>) with N = count for count <= kMaxFixed, else N = 0 (any length). A switch,
+// so that the compiler makes it one jump table (a fold over || compiled to a chain of ~7 compares per row).
+template <class F>
+[[gnu::always_inline]] inline void with_fixed_length(int count, F&& f) {
+  static_assert(kMaxFixed == 16);
+  using std::integral_constant;
+  switch (count) {
+    case 1: return f(integral_constant<int, 1>{});
+    case 2: return f(integral_constant<int, 2>{});
+    case 3: return f(integral_constant<int, 3>{});
+    case 4: return f(integral_constant<int, 4>{});
+    case 5: return f(integral_constant<int, 5>{});
+    case 6: return f(integral_constant<int, 6>{});
+    case 7: return f(integral_constant<int, 7>{});
+    case 8: return f(integral_constant<int, 8>{});
+    case 9: return f(integral_constant<int, 9>{});
+    case 10: return f(integral_constant<int, 10>{});
+    case 11: return f(integral_constant<int, 11>{});
+    case 12: return f(integral_constant<int, 12>{});
+    case 13: return f(integral_constant<int, 13>{});
+    case 14: return f(integral_constant<int, 14>{});
+    case 15: return f(integral_constant<int, 15>{});
+    case 16: return f(integral_constant<int, 16>{});
+    default: return f(integral_constant<int, 0>{});
+  }
 }
 
-// Spreads one particle's rows lying in planes [zb, ze).
-template <bool Monopole>
-SUSPEND_SIMD_CLONES void spread_particle(const SupportRow* rows, const SupportRow* rows_end, const double* tables,
-                                         const Vec3& f, const Mat3& gs, std::uint32_t zb, std::uint32_t ze,
-                                         double* fx, double* fy, double* fz) {
-  // The particle's multipoles broadcast once; a row's coefficients (a, b, c of each component, RowCoefficients)
-  // are then one vector product or multiply-add each.
+// Spreads one particle's planes lying in [zb, ze) (Inside: all of them do).
+template <bool Monopole, bool Inside>
+SUSPEND_SIMD_CLONES void spread_particle(const Visit& v, const Vec3& f, const Mat3& gs, std::uint32_t zb,
+                                         std::uint32_t ze, double* fx, double* fy, double* fz) {
+  // The particle's multipoles broadcast once; a plane's coefficients a, c and a row's b (RowCoefficients) are then
+  // one vector product or multiply-add each.
   Lanes fm[3], g0[3], g1[3], g2[3];
   for (int i = 0; i < 3; ++i) {
     broadcast(f[i], fm[i]);
@@ -167,64 +216,73 @@ SUSPEND_SIMD_CLONES void spread_particle(const SupportRow* rows, const SupportRo
     broadcast(gs(i, 1), g1[i]);
     broadcast(gs(i, 2), g2[i]);
   }
-  for (const SupportRow* r = rows; r != rows_end; ++r) {
-    if (r->iz < zb || r->iz >= ze) continue;
-    Lanes ym, yd, wy, wz, k[9];
-    broadcast(r->yz_m, ym);
-    broadcast(r->yz_d, yd);
-    broadcast(r->ydy, wy);
-    broadcast(r->ydz, wz);
+  const std::ptrdiff_t w = v.width;
+  for (const SupportPlane* q = v.planes; q != v.planes_end; ++q) {
+    if constexpr (!Inside)
+      if (q->iz < zb || q->iz >= ze) continue;
+    Lanes zm, zd, zdz, k[9], e[3];
+    broadcast(q->zm, zm);
+    broadcast(q->zd, zd);
+    broadcast(q->zd * q->dz, zdz);
     for (int i = 0; i < 3; ++i) {
-      k[i] = Monopole ? fm[i] * ym : Lanes{};
-      k[3 + i] = g1[i] * wy + g2[i] * wz;
-      k[6 + i] = g0[i] * yd;
+      k[i] = Monopole ? fm[i] * zm : Lanes{};
+      k[6 + i] = g0[i] * zd;
+      e[i] = g2[i] * zdz;
     }
-    const double* m = tables + r->table;
-    const double* d = m + r->width;
-    const double* dd = d + r->width;
-    double* px = fx + r->first;
-    double* py = fy + r->first;
-    double* pz = fz + r->first;
-    const int n = r->count;
-    with_fixed_length(
-        n,
-        [&](auto len) {
-          constexpr int N = decltype(len)::value;
-          if constexpr (N > 0 && N < 4) {
-            RowCoefficients c{};
-            for (int i = 0; i < 3; ++i) {
-              if constexpr (Monopole) c.a[i] = k[i][0];
-              c.b[i] = k[3 + i][0];
-              c.c[i] = k[6 + i][0];
+    const SupportRow* rows_end = v.rows + q->row_end;
+    const double plane_zd = q->zd;  // (a local: the field stores below could alias q->zd)
+    for (const SupportRow* r = v.rows + q->row_begin; r != rows_end; ++r) {
+      Lanes wy;
+      broadcast(plane_zd * v.dy[r->j], wy);
+      for (int i = 0; i < 3; ++i) k[3 + i] = g1[i] * wy + e[i];
+      const double* m = v.tables + r->table;
+      const double* d = m + w;
+      const double* dd = d + w;
+      double* px = fx + r->first;
+      double* py = fy + r->first;
+      double* pz = fz + r->first;
+      const int n = r->count;
+      with_fixed_length(
+          n,
+          [&](auto len) {
+            constexpr int N = decltype(len)::value;
+            if constexpr (N > 0 && N < 4) {
+              RowCoefficients c{};
+              for (int i = 0; i < 3; ++i) {
+                if constexpr (Monopole) c.a[i] = k[i][0];
+                c.b[i] = k[3 + i][0];
+                c.c[i] = k[6 + i][0];
+              }
+              spread_run<Monopole, N>(m, d, dd, c, px, py, pz, n);
+            } else {
+              spread_lanes<Monopole, N>(m, d, dd, k, px, py, pz, n);
             }
-            spread_run<Monopole, N>(m, d, dd, c, px, py, pz, n);
-          } else {
-            spread_lanes<Monopole, N>(m, d, dd, k, px, py, pz, n);
-          }
-        },
-        std::make_integer_sequence<int, kMaxFixed>{});
+          });
+    }
   }
 }
 
-// Interpolation in 4-lane vectors (GCC/Clang vector extension; two SSE halves in the baseline clone). Within a
-// row, nine lane-wise sums (u_c m, u_c d, u_c dd); at the row end they are weighted by the row factors into twelve
-// lane-wise particle sums, reduced across lanes once per particle. (Reducing nine sums across lanes in every row,
-// as a scalar `omp simd` reduction does, cost more than the products: rows are ~7 nodes.)
+// Interpolation in 4-lane vectors (GCC/Clang vector extension; two SSE halves in the baseline clone). Over the rows
+// of a z plane, lane-wise sums of u_c m and u_c dd, and per row of u_c d (weighted by the row's dy into a fourth
+// sum); at the plane end they are weighted by the plane's factors into twelve lane-wise particle sums, reduced
+// across lanes once per particle. (Reducing across lanes in every row, as a scalar `omp simd` reduction does, cost
+// more than the products: rows are ~7 nodes.)
 // A row of N >= 4 nodes is covered by whole vectors from its start plus one vector ending at its last node, whose
 // lanes already counted are multiplied by zero; every load stays inside the row. Rows of 1-3 nodes are loaded
 // lane by lane.
-struct LaneSums {
-  Lanes m[3], d[3], t[3];
+struct PlaneSums {
+  Lanes m[3], t[3], d[3], dy[3];
 };
 struct ParticleLanes {
   Lanes u[3], s0[3], s1[3], s2[3];
 };
 
-// Loads 4 lanes from each pointer (Short: the first N, zero-filled), scales the table lanes by `keep` (1 or 0) and
-// adds the nine products.
-template <bool Short, int N>
+// Loads 4 lanes from each pointer (Short: the first N, zero-filled), scales the table lanes by `keep` (1 or 0) if
+// Masked and adds the nine products (u m and u dd into the plane sums, u d into the row's).
+template <bool Short, bool Masked, int N>
 [[gnu::always_inline]] inline void add_chunk(const double* tm, const double* td, const double* tdd, const double* px,
-                                             const double* py, const double* pz, const Lanes& keep, LaneSums& r) {
+                                             const double* py, const double* pz, const Lanes& keep, PlaneSums& s,
+                                             Lanes (&rd)[3]) {
   Lanes m, d, dd, ux, uy, uz;
   if constexpr (Short) {
     load_short<N>(tm, m);
@@ -240,37 +298,39 @@ template <bool Short, int N>
     load_lanes(px, ux);
     load_lanes(py, uy);
     load_lanes(pz, uz);
-    m *= keep;
-    d *= keep;
-    dd *= keep;
+    if constexpr (Masked) {
+      m *= keep;
+      d *= keep;
+      dd *= keep;
+    }
   }
-  r.m[0] += ux * m;
-  r.m[1] += uy * m;
-  r.m[2] += uz * m;
-  r.d[0] += ux * d;
-  r.d[1] += uy * d;
-  r.d[2] += uz * d;
-  r.t[0] += ux * dd;
-  r.t[1] += uy * dd;
-  r.t[2] += uz * dd;
+  s.m[0] += ux * m;
+  s.m[1] += uy * m;
+  s.m[2] += uz * m;
+  rd[0] += ux * d;
+  rd[1] += uy * d;
+  rd[2] += uz * d;
+  s.t[0] += ux * dd;
+  s.t[1] += uy * dd;
+  s.t[2] += uz * dd;
 }
 
-// Row sums for a row of N nodes (N = 0: any length >= 4, given by count).
+// Sums of a row of N nodes (N = 0: any length >= 4, given by count).
 template <int N>
 [[gnu::always_inline]] inline void interpolate_row(const double* m, const double* d, const double* dd,
                                                    const double* ux, const double* uy, const double* uz, int count,
-                                                   LaneSums& r) {
+                                                   PlaneSums& s, Lanes (&rd)[3]) {
   const Lanes all{1.0, 1.0, 1.0, 1.0};
   if constexpr (N > 0 && N < 4) {
-    add_chunk<true, N>(m, d, dd, ux, uy, uz, all, r);
+    add_chunk<true, false, N>(m, d, dd, ux, uy, uz, all, s, rd);
   } else {
     const int n = N > 0 ? N : count;
     int i = 0;
-    for (; i + 4 <= n; i += 4) add_chunk<false, 0>(m + i, d + i, dd + i, ux + i, uy + i, uz + i, all, r);
+    for (; i + 4 <= n; i += 4) add_chunk<false, false, 0>(m + i, d + i, dd + i, ux + i, uy + i, uz + i, all, s, rd);
     if (i < n) {  // the last 4 nodes; lanes before node i were counted above
       const int o = n - 4, old = 4 - (n - i);
       const Lanes keep{old <= 0 ? 1.0 : 0.0, old <= 1 ? 1.0 : 0.0, old <= 2 ? 1.0 : 0.0, 1.0};
-      add_chunk<false, 0>(m + o, d + o, dd + o, ux + o, uy + o, uz + o, keep, r);
+      add_chunk<false, true, 0>(m + o, d + o, dd + o, ux + o, uy + o, uz + o, keep, s, rd);
     }
   }
 }
@@ -278,31 +338,39 @@ template <int N>
 [[gnu::always_inline]] inline double lane_sum(const Lanes& v) { return (v[0] + v[1]) + (v[2] + v[3]); }
 
 // Interpolates one particle: returns U / dV and the columns of A / (dV (-1/sD^2)).
-SUSPEND_SIMD_CLONES void interpolate_particle(const SupportRow* rows, const SupportRow* rows_end,
-                                              const double* tables, const double* ux, const double* uy,
-                                              const double* uz, Vec3& u, Mat3& a) {
+SUSPEND_SIMD_CLONES void interpolate_particle(const Visit& v, const double* ux, const double* uy, const double* uz,
+                                              Vec3& u, Mat3& a) {
   ParticleLanes p{};
-  for (const SupportRow* r = rows; r != rows_end; ++r) {
-    const double* m = tables + r->table;
-    const double* d = m + r->width;
-    const double* dd = d + r->width;
-    const std::size_t o = r->first;
-    const int n = r->count;
-    LaneSums t{};
-    with_fixed_length(
-        n, [&](auto len) { interpolate_row<decltype(len)::value>(m, d, dd, ux + o, uy + o, uz + o, n, t); },
-        std::make_integer_sequence<int, kMaxFixed>{});
-    // dy and dz are constant along the row: sum u d_y w_D = ydy sum u d (support_plan.hpp).
-    Lanes wm, wd, wy, wz;
-    broadcast(r->yz_m, wm);
-    broadcast(r->yz_d, wd);
-    broadcast(r->ydy, wy);
-    broadcast(r->ydz, wz);
+  const std::ptrdiff_t w = v.width;
+  for (const SupportPlane* q = v.planes; q != v.planes_end; ++q) {
+    PlaneSums s{};
+    const SupportRow* rows_end = v.rows + q->row_end;
+    for (const SupportRow* r = v.rows + q->row_begin; r != rows_end; ++r) {
+      const double* m = v.tables + r->table;
+      const double* d = m + w;
+      const double* dd = d + w;
+      const std::size_t o = r->first;
+      const int n = r->count;
+      Lanes rd[3] = {};
+      with_fixed_length(
+          n, [&](auto len) { interpolate_row<decltype(len)::value>(m, d, dd, ux + o, uy + o, uz + o, n, s, rd); });
+      // dy is constant along the row: sum u dy d = dy sum u d.
+      Lanes dy;
+      broadcast(v.dy[r->j], dy);
+      for (int c = 0; c < 3; ++c) {
+        s.d[c] += rd[c];
+        s.dy[c] += dy * rd[c];
+      }
+    }
+    Lanes zm, zd, zdz;
+    broadcast(q->zm, zm);
+    broadcast(q->zd, zd);
+    broadcast(q->zd * q->dz, zdz);
     for (int c = 0; c < 3; ++c) {
-      p.u[c] += wm * t.m[c];
-      p.s0[c] += wd * t.t[c];
-      p.s1[c] += wy * t.d[c];
-      p.s2[c] += wz * t.d[c];
+      p.u[c] += zm * s.m[c];
+      p.s0[c] += zd * s.t[c];
+      p.s1[c] += zd * s.dy[c];
+      p.s2[c] += zdz * s.d[c];
     }
   }
   for (int c = 0; c < 3; ++c) {
@@ -311,6 +379,141 @@ SUSPEND_SIMD_CLONES void interpolate_particle(const SupportRow* rows, const Supp
     a(c, 1) = lane_sum(p.s1[c]);
     a(c, 2) = lane_sum(p.s2[c]);
   }
+}
+
+#if SUSPEND_WIDE_KERNELS
+// 8-lane (AVX-512) kernels: the same arithmetic as spread_particle / interpolate_particle, a row in masked vectors of
+// 8 nodes (masked-off lanes are neither read from memory nor written), so rows of 1-8 nodes take one pass.
+[[gnu::always_inline]] SUSPEND_AVX512 inline __mmask8 row_mask(int left) {
+  return left >= 8 ? static_cast<__mmask8>(0xFF) : static_cast<__mmask8>((1u << left) - 1u);
+}
+
+template <bool Monopole, bool Inside>
+SUSPEND_AVX512 void spread_particle_wide(const Visit& v, const Vec3& f, const Mat3& gs, std::uint32_t zb,
+                                         std::uint32_t ze, double* fx, double* fy, double* fz) {
+  __m512d fm[3], g0[3], g1[3], g2[3];
+  for (int i = 0; i < 3; ++i) {
+    fm[i] = _mm512_set1_pd(f[i]);
+    g0[i] = _mm512_set1_pd(gs(i, 0));
+    g1[i] = _mm512_set1_pd(gs(i, 1));
+    g2[i] = _mm512_set1_pd(gs(i, 2));
+  }
+  double* const field[3] = {fx, fy, fz};
+  const std::ptrdiff_t w = v.width;
+  for (const SupportPlane* q = v.planes; q != v.planes_end; ++q) {
+    if constexpr (!Inside)
+      if (q->iz < zb || q->iz >= ze) continue;
+    // f_c += (F_c zm) m + (gs_c1 zd dy + gs_c2 zd dz) d + (gs_c0 zd) dd   (RowCoefficients, as vectors)
+    const __m512d zm = _mm512_set1_pd(q->zm), zd = _mm512_set1_pd(q->zd), zdz = _mm512_set1_pd(q->zd * q->dz);
+    __m512d ka[3], kc[3], ke[3];
+    for (int c = 0; c < 3; ++c) {
+      ka[c] = _mm512_mul_pd(fm[c], zm);
+      kc[c] = _mm512_mul_pd(g0[c], zd);
+      ke[c] = _mm512_mul_pd(g2[c], zdz);
+    }
+    const SupportRow* rows_end = v.rows + q->row_end;
+    const double plane_zd = q->zd;  // (a local: the field stores below could alias q->zd)
+    for (const SupportRow* r = v.rows + q->row_begin; r != rows_end; ++r) {
+      const __m512d wy = _mm512_set1_pd(plane_zd * v.dy[r->j]);
+      __m512d kb[3];
+      for (int c = 0; c < 3; ++c) kb[c] = _mm512_fmadd_pd(g1[c], wy, ke[c]);
+      const double* m = v.tables + r->table;
+      const double* d = m + w;
+      const double* dd = d + w;
+      const int n = r->count;
+      for (int i = 0; i < n; i += 8) {
+        const __mmask8 k = row_mask(n - i);
+        const __m512d vd = _mm512_maskz_loadu_pd(k, d + i);
+        const __m512d vdd = _mm512_maskz_loadu_pd(k, dd + i);
+        __m512d vm = _mm512_setzero_pd();
+        if constexpr (Monopole) vm = _mm512_maskz_loadu_pd(k, m + i);
+        for (int c = 0; c < 3; ++c) {
+          double* p = field[c] + r->first + i;
+          __m512d x = _mm512_maskz_loadu_pd(k, p);
+          x = _mm512_fmadd_pd(kb[c], vd, x);
+          x = _mm512_fmadd_pd(kc[c], vdd, x);
+          if constexpr (Monopole) x = _mm512_fmadd_pd(ka[c], vm, x);
+          _mm512_mask_storeu_pd(p, k, x);
+        }
+      }
+    }
+  }
+}
+
+// (Not _mm512_reduce_add_pd: with GCC 12 its _mm256_undefined_pd trips -Wuninitialized.)
+[[gnu::always_inline]] SUSPEND_AVX512 inline double lane_sum_wide(__m512d v) {
+  alignas(64) double x[8];
+  _mm512_store_pd(x, v);
+  return ((x[0] + x[4]) + (x[1] + x[5])) + ((x[2] + x[6]) + (x[3] + x[7]));
+}
+
+SUSPEND_AVX512 void interpolate_particle_wide(const Visit& v, const double* ux, const double* uy, const double* uz,
+                                              Vec3& u, Mat3& a) {
+  __m512d su[3], s0[3], s1[3], s2[3];
+  for (int c = 0; c < 3; ++c) su[c] = s0[c] = s1[c] = s2[c] = _mm512_setzero_pd();
+  const double* const field[3] = {ux, uy, uz};
+  const std::ptrdiff_t w = v.width;
+  for (const SupportPlane* q = v.planes; q != v.planes_end; ++q) {
+    __m512d pm[3], pt[3], pd[3], py[3];
+    for (int c = 0; c < 3; ++c) pm[c] = pt[c] = pd[c] = py[c] = _mm512_setzero_pd();
+    const SupportRow* rows_end = v.rows + q->row_end;
+    for (const SupportRow* r = v.rows + q->row_begin; r != rows_end; ++r) {
+      const double* m = v.tables + r->table;
+      const double* d = m + w;
+      const double* dd = d + w;
+      const int n = r->count;
+      const __m512d dy = _mm512_set1_pd(v.dy[r->j]);
+      for (int i = 0; i < n; i += 8) {
+        const __mmask8 k = row_mask(n - i);
+        const __m512d vm = _mm512_maskz_loadu_pd(k, m + i);
+        const __m512d vd = _mm512_maskz_loadu_pd(k, d + i);
+        const __m512d vdd = _mm512_maskz_loadu_pd(k, dd + i);
+        const __m512d vdy = _mm512_mul_pd(dy, vd);
+        for (int c = 0; c < 3; ++c) {
+          const __m512d x = _mm512_maskz_loadu_pd(k, field[c] + r->first + i);
+          pm[c] = _mm512_fmadd_pd(x, vm, pm[c]);
+          pt[c] = _mm512_fmadd_pd(x, vdd, pt[c]);
+          pd[c] = _mm512_fmadd_pd(x, vd, pd[c]);
+          py[c] = _mm512_fmadd_pd(x, vdy, py[c]);
+        }
+      }
+    }
+    const __m512d zm = _mm512_set1_pd(q->zm), zd = _mm512_set1_pd(q->zd), zdz = _mm512_set1_pd(q->zd * q->dz);
+    for (int c = 0; c < 3; ++c) {
+      su[c] = _mm512_fmadd_pd(zm, pm[c], su[c]);
+      s0[c] = _mm512_fmadd_pd(zd, pt[c], s0[c]);
+      s1[c] = _mm512_fmadd_pd(zd, py[c], s1[c]);
+      s2[c] = _mm512_fmadd_pd(zdz, pd[c], s2[c]);
+    }
+  }
+  for (int c = 0; c < 3; ++c) {
+    u[c] = lane_sum_wide(su[c]);
+    a(c, 0) = lane_sum_wide(s0[c]);
+    a(c, 1) = lane_sum_wide(s1[c]);
+    a(c, 2) = lane_sum_wide(s2[c]);
+  }
+}
+
+bool cpu_has_avx512() {
+  static const bool ok = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+                         __builtin_cpu_supports("avx512dq");
+  return ok;
+}
+#endif
+
+bool wide() { return wide_kernels_on.load(std::memory_order_relaxed) && wide_kernels_available(); }
+
+template <bool Monopole, bool Inside>
+void spread_visit(bool use_wide, const Visit& v, const Vec3& f, const Mat3& gs, std::uint32_t zb, std::uint32_t ze,
+                  double* fx, double* fy, double* fz) {
+#if SUSPEND_WIDE_KERNELS
+  if (use_wide) {
+    spread_particle_wide<Monopole, Inside>(v, f, gs, zb, ze, fx, fy, fz);
+    return;
+  }
+#endif
+  (void)use_wide;
+  spread_particle<Monopole, Inside>(v, f, gs, zb, ze, fx, fy, fz);
 }
 
 }  // namespace
@@ -323,8 +526,7 @@ void spread(const SupportPlan& plan, std::span<const Vec3> forces, std::span<con
   double* fx = field;
   double* fy = field + stride;
   double* fz = field + 2 * stride;
-  const double* tables = plan.tables.data();
-  const SupportRow* rows = plan.rows.data();
+  const bool use_wide = wide();
 #pragma omp parallel
   {
     // Thread t owns z planes [z_begin, z_end): writes never collide.
@@ -337,12 +539,19 @@ void spread(const SupportPlan& plan, std::span<const Vec3> forces, std::span<con
       const Vec3 f = has_f ? forces[p] : Vec3::Zero();
       // d/dx_j Delta_D = -d_j / sigma_D^2 Delta_D, so G_ij d_j Delta_D = (G d)_i w_D (-1 / sigma_D^2).
       const Mat3 gs = has_g ? Mat3(dipoles[p] * plan.dipole_scale[k]) : Mat3::Zero();
-      const SupportRow* begin = rows + plan.row_begin[k];
-      const SupportRow* end = rows + plan.row_end[k];
-      if (has_f)
-        spread_particle<true>(begin, end, tables, f, gs, zb, ze, fx, fy, fz);
-      else
-        spread_particle<false>(begin, end, tables, f, gs, zb, ze, fx, fy, fz);
+      const Visit v = visit_of(plan, k);
+      const bool inside = plan.inside_planes(k, zb, ze);
+      if (has_f) {
+        if (inside)
+          spread_visit<true, true>(use_wide, v, f, gs, zb, ze, fx, fy, fz);
+        else
+          spread_visit<true, false>(use_wide, v, f, gs, zb, ze, fx, fy, fz);
+      } else {
+        if (inside)
+          spread_visit<false, true>(use_wide, v, f, gs, zb, ze, fx, fy, fz);
+        else
+          spread_visit<false, false>(use_wide, v, f, gs, zb, ze, fx, fy, fz);
+      }
     }
   }
 }
@@ -352,21 +561,35 @@ void interpolate(const SupportPlan& plan, const double* field, std::size_t strid
   const bool want_u = !velocities.empty(), want_a = !gradient_moments.empty();
   const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(plan.visits());
   const double dv = plan.cell_volume;
-  const double* tables = plan.tables.data();
-  const SupportRow* rows = plan.rows.data();
+  [[maybe_unused]] const bool use_wide = wide();
 #pragma omp parallel for schedule(dynamic, 16)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     const std::size_t ku = static_cast<std::size_t>(k);
     Vec3 u;
     Mat3 a;
-    interpolate_particle(rows + plan.row_begin[ku], rows + plan.row_end[ku], tables, field, field + stride,
-                         field + 2 * stride, u, a);
+    const Visit v = visit_of(plan, ku);
+#if SUSPEND_WIDE_KERNELS
+    if (use_wide)
+      interpolate_particle_wide(v, field, field + stride, field + 2 * stride, u, a);
+    else
+#endif
+      interpolate_particle(v, field, field + stride, field + 2 * stride, u, a);
     // A_ij = sum u_i d_j Delta_D dV with d_j Delta_D = -d_j / sigma_D^2 Delta_D.
     const std::size_t p = plan.particle[ku];
     if (want_u) velocities[p] = u * dv;
     if (want_a) gradient_moments[p] = a * (dv * plan.dipole_scale[ku]);
   }
 }
+
+bool wide_kernels_available() {
+#if SUSPEND_WIDE_KERNELS
+  return cpu_has_avx512();
+#else
+  return false;
+#endif
+}
+
+void use_wide_kernels(bool on) { wide_kernels_on.store(on, std::memory_order_relaxed); }
 
 void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::span<const Vec3> forces,
             std::span<const Mat3> dipoles, double* field, std::size_t stride) {

@@ -20,13 +20,17 @@
 
 namespace suspend::fcm {
 
+// The Gaussians put on the grid. Without spectral splitting they are the FCM envelopes (envelope.hpp); with a
+// split width c (solver.hpp) they are the narrower tau = sqrt(sigma^2 - c^2) and the Green's function supplies the
+// rest (Delta_sigma = Delta_tau * Delta_c).
 struct Envelope {
   Vec3 centre = Vec3::Zero();
-  double sigma_m = 0.0;  // monopole width
-  double sigma_d = 0.0;  // dipole width
+  double sigma_m = 0.0;  // monopole width on the grid (tau_M)
+  double sigma_d = 0.0;  // dipole width on the grid (tau_D)
   double support = 0.0;  // truncation radius
 };
-Envelope make_envelope(const Vec3& centre, double radius, double truncation_widths);
+// Truncated at truncation_widths x the (narrow) monopole width; split < dipole_width(radius).
+Envelope make_envelope(const Vec3& centre, double radius, double truncation_widths, double split = 0.0);
 
 // The dipole tensor G from a torque and a (symmetric) stresslet, and the angular velocity and rate of strain
 // from an interpolated gradient moment A.
@@ -44,6 +48,12 @@ void spread(const SupportPlan& plan, std::span<const Vec3> forces, std::span<con
 // Interpolates the velocity field onto every particle (velocities and/or gradient moments may be empty).
 void interpolate(const SupportPlan& plan, const double* field, std::size_t stride, std::span<Vec3> velocities,
                  std::span<Mat3> gradient_moments);
+
+// Row kernels: 8-lane AVX-512 ones where the CPU has them (x86-64 with GCC), else 4-lane AVX2 or the portable
+// baseline (chosen at load time). The results agree to round-off. For tests and benchmarks: whether the 8-lane
+// kernels exist on this CPU, and a process-wide switch (default on; off selects the 4-lane kernels).
+bool wide_kernels_available();
+void use_wide_kernels(bool on);
 
 // The same for a one-off configuration: plans the supports (support_plan.hpp), then spreads / interpolates.
 void spread(const ShearedGrid& grid, std::span<const Envelope> envelopes, std::span<const Vec3> forces,

@@ -25,12 +25,14 @@ int ceil_int(double v) {
   return i + (v > i ? 1 : 0);
 }
 
-double gaussian_norm(double sigma) { return std::pow(2.0 * std::numbers::pi * sigma * sigma, -1.5); }
+double gaussian_norm(double sigma) {  // (2 pi sigma^2)^(-3/2)
+  const double v = 2.0 * std::numbers::pi * sigma * sigma;
+  return 1.0 / (v * std::sqrt(v));
+}
 
-void gaussian_row(double d0, double h, double a, int count, double* out) {
-  // out[i] = exp(-a (d0 + i h)^2) by the exact recurrence.
-  double w = std::exp(-a * d0 * d0), r = std::exp(-a * (2.0 * d0 * h + h * h));
-  const double q = std::exp(-2.0 * a * h * h);
+// out[i] = scale exp(-a (d0 + i h)^2) by the exact recurrence; q = exp(-2 a h^2) (one per width and spacing).
+void gaussian_row(double d0, double h, double a, double q, int count, double* out, double scale = 1.0) {
+  double w = scale * std::exp(-a * d0 * d0), r = std::exp(-a * (2.0 * d0 * h + h * h));
   for (int i = 0; i < count; ++i) {
     out[i] = w;
     w *= r;
@@ -43,6 +45,7 @@ void gaussian_row(double d0, double h, double a, int count, double* out) {
 struct Extent {
   int kz0, kz1, ky0, ky1, width;
   int rows() const { return ky1 - ky0 + 1; }
+  int planes() const { return kz1 - kz0 + 1; }
 };
 
 Extent extent_of(const ShearedGrid& g, const Envelope& e) {
@@ -69,16 +72,17 @@ struct AxisTables {
   std::vector<int> kx0, iy;
 };
 
-// Calls emit(row) for every run of the envelope's support, z plane by z plane; `table` is the offset of the
-// particle's x tables (row j of the extent at table + 3 j width).
-template <class Emit>
-void for_each_row(const ShearedGrid& g, const Envelope& e, const Extent& x, std::size_t table, AxisTables& t,
-                  Emit&& emit) {
+// Fills the envelope's x tables (y row j at tables + 3 j width: m, d, dd with the row's y factor, support_plan.hpp)
+// and writes its planes and rows from `plane` and `row` on; returns the ends. `table` is the offset of the
+// particle's tables in the plan.
+void plan_envelope(const ShearedGrid& g, const Envelope& e, const Extent& x, std::size_t table, double* tables,
+                   double* row_dy, AxisTables& t, SupportPlane* plane, SupportRow* row, SupportPlane*& plane_end,
+                   SupportRow*& row_end, std::size_t row_offset) {
   const double hx = g.spacing.x(), hy = g.spacing.y(), hz = g.spacing.z();
   const double inv_hx = 1.0 / hx, r2 = e.support * e.support;
   const double am = 0.5 / (e.sigma_m * e.sigma_m), ad = 0.5 / (e.sigma_d * e.sigma_d);
   const double cm = gaussian_norm(e.sigma_m), cd = gaussian_norm(e.sigma_d);
-  const int nzs = x.kz1 - x.kz0 + 1, nys = x.rows(), nx = g.n[0];
+  const int nzs = x.planes(), nys = x.rows(), nx = g.n[0];
   t.zm.resize(static_cast<std::size_t>(std::max(nzs, 0)));
   t.zd.resize(t.zm.size());
   t.ym.resize(static_cast<std::size_t>(std::max(nys, 0)));
@@ -86,70 +90,61 @@ void for_each_row(const ShearedGrid& g, const Envelope& e, const Extent& x, std:
   t.dx0.resize(t.ym.size());
   t.kx0.resize(t.ym.size());
   t.iy.resize(t.ym.size());
-  gaussian_row(x.kz0 * hz - e.centre.z(), hz, am, nzs, t.zm.data());
-  gaussian_row(x.kz0 * hz - e.centre.z(), hz, ad, nzs, t.zd.data());
-  gaussian_row(x.ky0 * hy - e.centre.y(), hy, am, nys, t.ym.data());
-  gaussian_row(x.ky0 * hy - e.centre.y(), hy, ad, nys, t.yd.data());
+  gaussian_row(x.kz0 * hz - e.centre.z(), hz, am, std::exp(-2.0 * am * hz * hz), nzs, t.zm.data());
+  gaussian_row(x.kz0 * hz - e.centre.z(), hz, ad, std::exp(-2.0 * ad * hz * hz), nzs, t.zd.data());
+  gaussian_row(x.ky0 * hy - e.centre.y(), hy, am, std::exp(-2.0 * am * hy * hy), nys, t.ym.data());
+  gaussian_row(x.ky0 * hy - e.centre.y(), hy, ad, std::exp(-2.0 * ad * hy * hy), nys, t.yd.data());
+  const double qm = std::exp(-2.0 * am * hx * hx), qd = std::exp(-2.0 * ad * hx * hx);
   for (int j = 0; j < nys; ++j) {
     t.kx0[j] = row_start(g, e, x.ky0 + j);
     t.dx0[j] = t.kx0[j] * hx - row_centre(g, e, x.ky0 + j);
     t.iy[j] = periodic_index(x.ky0 + j, g.n[1]);
+    row_dy[j] = (x.ky0 + j) * hy - e.centre.y();
+    double* m = tables + 3 * static_cast<std::size_t>(j) * x.width;
+    double* d = m + x.width;
+    double* dd = d + x.width;
+    gaussian_row(t.dx0[j], hx, am, qm, x.width, m, t.ym[j]);
+    gaussian_row(t.dx0[j], hx, ad, qd, x.width, d, t.yd[j]);
+    for (int i = 0; i < x.width; ++i) dd[i] = (t.dx0[j] + i * hx) * d[i];
   }
   for (int kz = x.kz0; kz <= x.kz1; ++kz) {
     const double dz = kz * hz - e.centre.z();
     const double ry2 = r2 - dz * dz;
     if (ry2 < 0.0) continue;
-    const int iz = periodic_index(kz, g.n[2]);
-    const double zm = cm * t.zm[kz - x.kz0], zd = cd * t.zd[kz - x.kz0];
+    SupportPlane p;
+    p.zm = cm * t.zm[kz - x.kz0];
+    p.zd = cd * t.zd[kz - x.kz0];
+    p.dz = dz;
+    p.iz = static_cast<std::uint32_t>(periodic_index(kz, g.n[2]));
+    SupportRow* first_row = row;
     for (int j = 0; j < nys; ++j) {
-      const double dy = (x.ky0 + j) * hy - e.centre.y();
+      const double dy = row_dy[j];
       const double rx2 = ry2 - dy * dy;
       if (rx2 < 0.0) continue;
       const double rx = std::sqrt(rx2);
-      // Node range [ka, kb] of the sphere's chord within the tabulated nodes kx0 .. kx0 + width - 1.
-      const int kx0 = t.kx0[j];
+      // Node range [ia, ib] of the sphere's chord within the tabulated nodes kx0 .. kx0 + width - 1.
       const int ia = std::max(ceil_int((-t.dx0[j] - rx) * inv_hx), 0);
       const int ib = std::min(floor_int((-t.dx0[j] + rx) * inv_hx), x.width - 1);
       if (ib < ia) continue;
-      SupportRow r;
-      r.width = static_cast<std::uint16_t>(x.width);
-      r.iz = static_cast<std::uint32_t>(iz);
-      r.yz_m = zm * t.ym[j];
-      r.yz_d = zd * t.yd[j];
-      r.ydy = r.yz_d * dy;
-      r.ydz = r.yz_d * dz;
-      const std::size_t base = g.index(0, t.iy[j], iz);
+      const std::size_t base = g.index(0, t.iy[j], static_cast<int>(p.iz));
       const std::size_t row_table = table + 3 * static_cast<std::size_t>(j) * x.width;
-      const int ix = periodic_index(kx0 + ia, nx);
+      int ix = t.kx0[j] + ia;
+      if (ix < 0 || ix >= nx) ix = periodic_index(ix, nx);
       const int total = ib - ia + 1, first_run = std::min(total, nx - ix);
-      r.first = static_cast<std::uint32_t>(base + ix);
-      r.table = static_cast<std::uint32_t>(row_table + ia);
-      r.count = static_cast<std::uint16_t>(first_run);
-      emit(r);
-      if (first_run < total) {
-        r.first = static_cast<std::uint32_t>(base);
-        r.table = static_cast<std::uint32_t>(row_table + ia + first_run);
-        r.count = static_cast<std::uint16_t>(total - first_run);
-        emit(r);
-      }
+      *row++ = {static_cast<std::uint32_t>(base + ix), static_cast<std::uint32_t>(row_table + ia),
+                static_cast<std::uint16_t>(first_run), static_cast<std::uint16_t>(j)};
+      if (first_run < total)
+        *row++ = {static_cast<std::uint32_t>(base), static_cast<std::uint32_t>(row_table + ia + first_run),
+                  static_cast<std::uint16_t>(total - first_run), static_cast<std::uint16_t>(j)};
     }
+    if (row == first_row) continue;
+    p.row_begin = static_cast<std::uint32_t>(row_offset);
+    row_offset += static_cast<std::size_t>(row - first_row);
+    p.row_end = static_cast<std::uint32_t>(row_offset);
+    *plane++ = p;
   }
-}
-
-// The m, d, dd tables of every y row of the extent (layout of for_each_row).
-void fill_tables(const ShearedGrid& g, const Envelope& e, const Extent& x, double* t) {
-  const double hx = g.spacing.x();
-  const double am = 0.5 / (e.sigma_m * e.sigma_m), ad = 0.5 / (e.sigma_d * e.sigma_d);
-  for (int ky = x.ky0; ky <= x.ky1; ++ky) {
-    const int kx0 = row_start(g, e, ky);
-    const double dx0 = kx0 * hx - row_centre(g, e, ky);
-    double* m = t + 3 * static_cast<std::size_t>(ky - x.ky0) * x.width;
-    double* d = m + x.width;
-    double* dd = d + x.width;
-    gaussian_row(dx0, hx, am, x.width, m);
-    gaussian_row(dx0, hx, ad, x.width, d);
-    for (int i = 0; i < x.width; ++i) dd[i] = (dx0 + i * hx) * d[i];
-  }
+  plane_end = plane;
+  row_end = row;
 }
 
 }  // namespace
@@ -165,20 +160,24 @@ void plan_support(const ShearedGrid& g, std::span<const Envelope> envelopes, std
                   SupportPlan& plan) {
   if (static_cast<double>(g.n[0]) * g.n[1] * g.n[2] > std::numeric_limits<std::uint32_t>::max())
     throw NumericalError("fcm: grid too large for 32-bit node offsets");
-  for (const Envelope& e : envelopes)  // checked here: nothing may throw inside the parallel passes
-    if (!(extent_of(g, e).width <= std::numeric_limits<std::uint16_t>::max()))
+  for (const Envelope& e : envelopes) {  // checked here: nothing may throw inside the parallel passes
+    const Extent x = extent_of(g, e);
+    if (!(x.width <= std::numeric_limits<std::uint16_t>::max() && x.rows() <= std::numeric_limits<std::uint16_t>::max()))
       throw NumericalError("fcm: envelope support spans more than 65535 grid nodes");
+  }
   const std::size_t n = envelopes.size();
   const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(n);
   plan.cell_volume = g.cell_volume();
   plan.particle.resize(n);
   plan.dipole_scale.resize(n);
-  std::vector<std::size_t> table_begin(n + 1, 0);
-  plan.row_begin.assign(n + 1, 0);  // (sizes only grow or shrink: a reused plan is not zero-filled again)
-  plan.row_end.resize(n);
+  plan.dy_begin.assign(n + 1, 0);
+  plan.width.resize(n);
+  std::vector<std::size_t> table_begin(n + 1, 0), row_begin(n + 1, 0);
+  plan.plane_begin.assign(n + 1, 0);  // (sizes only grow or shrink: a reused plan is not zero-filled again)
+  plan.plane_end.resize(n);
   plan.z_first.resize(n);
   plan.z_planes.resize(n);
-  // Pass 1: row slots and table entries per visit.
+  // Pass 1: plane and row slots and table entries per visit.
 #pragma omp parallel for schedule(dynamic, 32)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     const std::size_t ku = static_cast<std::size_t>(k);
@@ -186,29 +185,37 @@ void plan_support(const ShearedGrid& g, std::span<const Envelope> envelopes, std
     const Envelope& e = envelopes[p];
     const Extent x = extent_of(g, e);
     // Room for every (z, y) pair of the extent, twice where the tabulated x range crosses the periodic boundary:
-    // an upper bound, so the rows are written in one pass (the unused tail of a slot is skipped via row_end).
+    // an upper bound, so the rows are written in one pass.
     std::size_t slots = 0;
     for (int ky = x.ky0; ky <= x.ky1; ++ky) {
       const int ix = periodic_index(row_start(g, e, ky), g.n[0]);
       slots += ix + x.width > g.n[0] ? 2 : 1;
     }
-    const std::size_t rows = slots * static_cast<std::size_t>(std::max(x.kz1 - x.kz0 + 1, 0));
+    const std::size_t planes = static_cast<std::size_t>(std::max(x.planes(), 0));
     plan.particle[ku] = p;
     plan.z_first[ku] = static_cast<std::uint32_t>(periodic_index(x.kz0, g.n[2]));
-    plan.z_planes[ku] = static_cast<std::uint32_t>(std::clamp(x.kz1 - x.kz0 + 1, 0, g.n[2]));
+    plan.z_planes[ku] = static_cast<std::uint32_t>(std::clamp(x.planes(), 0, g.n[2]));
     plan.dipole_scale[ku] = -1.0 / (e.sigma_d * e.sigma_d);
-    plan.row_begin[ku + 1] = rows;
+    plan.dy_begin[ku + 1] = static_cast<std::size_t>(std::max(x.rows(), 0));
+    plan.width[ku] = static_cast<std::uint16_t>(x.width);
+    plan.plane_begin[ku + 1] = planes;
+    row_begin[ku + 1] = slots * planes;
     table_begin[ku + 1] = 3 * static_cast<std::size_t>(x.rows()) * x.width;
   }
   for (std::size_t k = 0; k < n; ++k) {
-    plan.row_begin[k + 1] += plan.row_begin[k];
+    plan.plane_begin[k + 1] += plan.plane_begin[k];
+    plan.dy_begin[k + 1] += plan.dy_begin[k];
+    row_begin[k + 1] += row_begin[k];
     table_begin[k + 1] += table_begin[k];
   }
-  if (table_begin[n] > std::numeric_limits<std::uint32_t>::max())
+  if (table_begin[n] > std::numeric_limits<std::uint32_t>::max() ||
+      row_begin[n] > std::numeric_limits<std::uint32_t>::max())
     throw NumericalError("fcm: envelope tables too large for 32-bit offsets");
-  plan.rows.resize(plan.row_begin[n]);
+  plan.planes.resize(plan.plane_begin[n]);
+  plan.rows.resize(row_begin[n]);
   plan.tables.resize(table_begin[n]);
-  // Pass 2: tables and rows.
+  plan.dy.resize(plan.dy_begin[n]);
+  // Pass 2: tables, planes and rows.
 #pragma omp parallel
   {
   AxisTables axis;
@@ -217,15 +224,22 @@ void plan_support(const ShearedGrid& g, std::span<const Envelope> envelopes, std
     const std::size_t ku = static_cast<std::size_t>(k);
     const Envelope& e = envelopes[plan.particle[ku]];
     const Extent x = extent_of(g, e);
-    fill_tables(g, e, x, plan.tables.data() + table_begin[ku]);
-    std::size_t r = plan.row_begin[ku];
-    for_each_row(g, e, x, table_begin[ku], axis, [&](const SupportRow& row) { plan.rows[r++] = row; });
-    plan.row_end[ku] = r;
+    SupportPlane* plane_end = nullptr;
+    SupportRow* row_end = nullptr;
+    plan_envelope(g, e, x, table_begin[ku], plan.tables.data() + table_begin[ku], plan.dy.data() + plan.dy_begin[ku], axis,
+                  plan.planes.data() + plan.plane_begin[ku], plan.rows.data() + row_begin[ku], plane_end, row_end,
+                  row_begin[ku]);
+    plan.plane_end[ku] = static_cast<std::size_t>(plane_end - plan.planes.data());
   }
   }
   plan.plane_nodes.assign(static_cast<std::size_t>(g.n[2]), 0);
   for (std::size_t k = 0; k < n; ++k)
-    for (std::size_t j = plan.row_begin[k]; j < plan.row_end[k]; ++j) plan.plane_nodes[plan.rows[j].iz] += plan.rows[j].count;
+    for (std::size_t q = plan.plane_begin[k]; q < plan.plane_end[k]; ++q) {
+      const SupportPlane& p = plan.planes[q];
+      std::size_t nodes = 0;
+      for (std::uint32_t r = p.row_begin; r < p.row_end; ++r) nodes += plan.rows[r].count;
+      plan.plane_nodes[p.iz] += nodes;
+    }
 }
 
 std::vector<std::uint32_t> grid_order(const ShearedGrid& g, std::span<const Envelope> envelopes) {

@@ -4,14 +4,17 @@
 //
 // Support: the nodes within the truncation sphere |x - Y| <= support (physical distance on the sheared lattice,
 // sheared_grid.hpp). The Gaussians are separable, exp(-|d|^2/2s^2) = exp(-dz^2/2s^2) exp(-dy^2/2s^2)
-// exp(-dx^2/2s^2), so a support is stored as rows of consecutive x' nodes, each with its (y, z) factor and a
-// pointer into per-particle x tables. The x tables depend on the y row, because the row centre x' = x - gamma_t y
-// moves with y. For each y row we tabulate, over the nodes of the row:
-//   m[i] = exp(-dx_i^2 / 2 sM^2),  d[i] = exp(-dx_i^2 / 2 sD^2),  dd[i] = dx_i d[i]
-// (dd carries the first moment the dipole needs: d/dx_j Delta_D = -d_j / sD^2 Delta_D). Node weights are then
-//   w_M = yz_m m[i],  w_D = yz_d d[i],  with yz_m = cM exp(-(dy^2 + dz^2)/2 sM^2), cM = (2 pi sM^2)^(-3/2).
+// exp(-dx^2/2s^2), so a support is stored as z planes, each a list of rows of consecutive x' nodes. The x tables
+// depend on the y row, because the row centre x' = x - gamma_t y moves with y; they carry the row's y factor. For
+// y row j of the extent we tabulate, over its nodes:
+//   m[i] = ym_j exp(-dx_i^2 / 2 sM^2),  d[i] = yd_j exp(-dx_i^2 / 2 sD^2),  dd[i] = dx_i d[i]
+// with ym_j = exp(-dy_j^2 / 2 sM^2), yd_j = exp(-dy_j^2 / 2 sD^2) (dd carries the first moment the dipole needs:
+// d/dx_j Delta_D = -d_j / sD^2 Delta_D). A z plane holds its factors zm = cM exp(-dz^2/2 sM^2),
+// zd = cD exp(-dz^2/2 sD^2) (cM = (2 pi sM^2)^(-3/2)), so node weights are w_M = zm m[i], w_D = zd d[i], and the
+// y and z offsets of the dipole moment are zd dy_j d[i] and zd dz d[i].
 // Tables are filled with the exact recurrence exp(-a(d+h)^2) = exp(-a d^2) r, r <- r exp(-2 a h^2).
-// Units: lengths in a_1.
+// A row descriptor is 12 bytes and a plane 32 (the rows of a 64^3 solve at phi = 0.4 are streamed through every
+// spread and interpolation: 271,000 of them). Units: lengths in a_1.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -24,25 +27,36 @@ namespace suspend::fcm {
 
 struct Envelope;
 
-// One run of `count` consecutive nodes first .. first + count - 1 (index within one field component) in z plane
-// iz, at offsets dy, dz from the centre, stored pre-multiplied: ydy = yz_d dy, ydz = yz_d dz. Its x tables start at tables[table] (m), tables[table + width] (d) and
-// tables[table + 2 width] (dd); a row crossing the periodic x' boundary is stored as two runs.
+// One run of `count` consecutive nodes first .. first + count - 1 (index within one field component) of y row j of
+// its particle's extent, in the z plane that lists it. Its x tables start at tables[table] (m), tables[table + w]
+// (d) and tables[table + 2 w] (dd), w = SupportPlan::width[visit]; a row crossing the periodic x' boundary is
+// stored as two runs.
 struct SupportRow {
   std::uint32_t first = 0;
   std::uint32_t table = 0;
   std::uint16_t count = 0;
-  std::uint16_t width = 0;
+  std::uint16_t j = 0;
+};
+
+// One z plane of a particle's support: rows [row_begin, row_end) of SupportPlan::rows, the plane's Gaussian
+// factors (normalisation included) and dz = z_plane - Z.
+struct SupportPlane {
+  double zm = 0.0, zd = 0.0, dz = 0.0;
   std::uint32_t iz = 0;
-  double yz_m = 0.0, yz_d = 0.0, ydy = 0.0, ydz = 0.0;
+  std::uint32_t row_begin = 0, row_end = 0;
 };
 
 struct SupportPlan {
   std::vector<std::uint32_t> particle;   // particle visited at position k (spatially sorted)
-  std::vector<std::size_t> row_begin;    // rows of visit k: [row_begin[k], row_end[k]) (slots up to
-  std::vector<std::size_t> row_end;      //   row_begin[k + 1] are reserved, an upper bound)
+  std::vector<std::size_t> plane_begin;  // planes of visit k: [plane_begin[k], plane_end[k]) (slots up to
+  std::vector<std::size_t> plane_end;    //   plane_begin[k + 1] are reserved, an upper bound)
   std::vector<double> dipole_scale;      // -1 / sD^2 of visit k
+  std::vector<std::size_t> dy_begin;     // dy of visit k's y row j: dy[dy_begin[k] + j]
+  std::vector<double> dy;
+  std::vector<std::uint16_t> width;      // x-table width of visit k
   std::vector<std::uint32_t> z_first;    // first z plane (wrapped) of visit k's extent ...
   std::vector<std::uint32_t> z_planes;   // ... and its number of planes (may wrap past n_z)
+  std::vector<SupportPlane> planes;
   std::vector<SupportRow> rows;
   std::vector<double> tables;
   std::vector<std::size_t> plane_nodes;  // support nodes per z plane: the work a spreading thread owns
@@ -53,6 +67,10 @@ struct SupportPlan {
   bool touches_planes(std::size_t k, std::uint32_t z_begin, std::uint32_t z_end, std::uint32_t nz) const {
     const std::uint32_t a = z_first[k], b = z_first[k] + z_planes[k];  // [a, b), b may exceed nz
     return (a < z_end && b > z_begin) || (b > nz && b - nz > z_begin);
+  }
+  // Whether all of visit k's planes lie in [z_begin, z_end).
+  bool inside_planes(std::size_t k, std::uint32_t z_begin, std::uint32_t z_end) const {
+    return z_first[k] >= z_begin && z_first[k] + z_planes[k] <= z_end;
   }
 };
 

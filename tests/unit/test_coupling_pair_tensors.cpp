@@ -42,6 +42,13 @@ TEST(CouplingPairTensors, AssemblyEqualsThePairwiseLubricationLaw) {
       const Vector12 fm = pair_strain_forces(1.0, lambda, n, si, sj, e_i, e_j);
       const Vector12 ft = law.strain_forces(n, gap, e_i, e_j);
       EXPECT_LT((fm - ft).norm(), 1e-12 * ft.norm()) << lambda;
+      // The matrix-free product equals the assembled matrix times a vector.
+      Vector12 v;
+      v << 0.3, -1.2, 0.7, 0.25, 0.9, -0.4, -0.6, 0.1, 1.1, -0.8, 0.35, 0.5;
+      const Vector12 rv = mine * v;
+      const PairResistanceCoefficients c = pair_resistance_coefficients(1.0, lambda, si, sj);
+      EXPECT_LT((pair_resistance(c, n) - mine).norm(), 1e-12 * mine.norm()) << lambda;
+      EXPECT_LT((pair_resistance_product(c, n, v) - rv).norm(), 1e-12 * rv.norm()) << lambda;
     }
   }
 }
