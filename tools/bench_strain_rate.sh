@@ -5,11 +5,13 @@
 # The packing is made by a first, untimed run; the timed run starts from it, so only the stepping is measured.
 # Prints s/strain, steps/strain, and the mean and largest overlap over the contacts of the run's snapshots (a_1).
 # Usage: tools/bench_strain_rate.sh [STRAIN (default 0.5)] [THREADS (default 1)] [BUILD_DIR (default build)]
+#                                  [CONTACTS: explicit (default) or implicit, run.time_step.contacts]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 strain=${1:-0.5}
 threads=${2:-1}
 build=${3:-$root/build}
+contacts=${4:-explicit}
 bin=$build/bin/suspend
 case_file=$root/cases/validation/frictionless_jamming.yaml
 work=$(mktemp -d)
@@ -21,10 +23,10 @@ export OMP_WAIT_POLICY=passive
 start=$(date +%s.%N)
 "$bin" run "$case_file" --out "$work/run" --threads "$threads" --quiet \
   --set "particles.initial={from: file, file: $work/pack/run.h5}" --set run.strain="$strain" \
-  --set run.average_from=0 --set run.output.snapshot_every=0.05 >/dev/null
+  --set run.average_from=0 --set run.output.snapshot_every=0.05 --set run.time_step.contacts="$contacts" >/dev/null
 end=$(date +%s.%N)
 
-/usr/bin/python3 - "$work/run/run.h5" "$start" "$end" "$threads" <<'PY'
+/usr/bin/python3 - "$work/run/run.h5" "$start" "$end" "$threads" "$contacts" <<'PY'
 import sys
 import h5py
 import numpy as np
@@ -53,7 +55,7 @@ with h5py.File(path, "r") as f:
 span = strain[-1] - strain[0]
 wall = end - start
 o = np.concatenate(overlaps) if overlaps else np.zeros(1)
-print(f"threads {threads}: strain {span:.3f} in {wall:.1f} s wall")
+print(f"contacts {sys.argv[5]}, threads {threads}: strain {span:.3f} in {wall:.1f} s wall")
 print(f"s/strain {wall / span:.2f}")
 print(f"steps/strain {(step[-1] - step[0]) / span:.0f}")
 print(f"mean overlap {o.mean():.5f} a_1 (max {o.max():.5f}) over {len(o)} contacts in {len(overlaps)} snapshots")
