@@ -1,6 +1,6 @@
 // The exact two-sphere resistance near contact: what FCM + sub-grid correction must reproduce.
 //
-//   lambda = 1:  the exact functions of Jeffrey & Onishi (1984) / Townsend (equal_sphere_table.hpp), written as the
+//   lambda = 1:  the exact functions of Jeffrey & Onishi (1984) / Townsend (dem/hydro/equal_sphere_table.hpp), written as the
 //                pairwise model of dem/hydro (Stokes drag + the singular lubrication terms, resistance_functions.hpp)
 //                plus a remainder r(xi) = exact - model that is bounded at contact (its contact value is the
 //                O(1) term, e.g. X11A: -0.0046, Y11B: +0.239) and interpolated linearly in xi between the table's
@@ -12,8 +12,6 @@
 // apart). The gap is saturated and regularised like the pairwise engine's: xi = 2 max(h, h_in)/(a1 + a2) + eps.
 // Units: eta = 1, lengths in a_1.
 #pragma once
-#include <vector>
-
 #include "dem/hydro/lubrication.hpp"
 #include "dem/hydro/resistance_functions.hpp"
 
@@ -25,7 +23,7 @@ class ExactPairResistance {
   ExactPairResistance(double a_i, double a_j, const hydro::LubricationParams& lubrication);
 
   // Whether the exact (tabulated) functions are used, rather than the singular model alone.
-  bool tabulated() const { return !remainder_xi_.empty(); }
+  bool tabulated() const { return tabulated_; }
   // Scalars seen from i (lambda = a_j/a_i) and from j at surface gap h (any sign; saturated below h_in).
   void scalars(double gap, hydro::ResistanceScalars& from_i, hydro::ResistanceScalars& from_j) const;
   double scaled_gap(double gap) const;
@@ -34,8 +32,7 @@ class ExactPairResistance {
   double a_i_, a_j_;
   hydro::LubricationParams lubrication_;
   hydro::LubricationCoefficients from_i_, from_j_;
-  std::vector<double> remainder_xi_;                     // table gaps (lambda = 1 only)
-  std::vector<hydro::ResistanceScalars> remainder_;      // exact - model at those gaps
+  bool tabulated_ = false;  // lambda = 1: exact = model + hydro::EqualSphereRemainder
 };
 
 }  // namespace suspend::coupling

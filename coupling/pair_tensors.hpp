@@ -15,6 +15,7 @@
 #include <array>
 
 #include "core/vec.hpp"
+#include "dem/hydro/equal_sphere_remainder.hpp"
 #include "dem/hydro/lubrication.hpp"
 #include "dem/hydro/resistance_functions.hpp"
 
@@ -26,11 +27,7 @@ using hydro::Vector12;
 
 // The sixteen scalars the sub-grid correction carries (the M functions only enter through the strain stresslet,
 // which the FCM rigidity resolves; docs/coupling.md).
-inline constexpr std::array<double ResistanceScalars::*, 16> correction_functions{
-    &ResistanceScalars::x11a, &ResistanceScalars::x12a, &ResistanceScalars::y11a, &ResistanceScalars::y12a,
-    &ResistanceScalars::y11b, &ResistanceScalars::y12b, &ResistanceScalars::x11c, &ResistanceScalars::x12c,
-    &ResistanceScalars::y11c, &ResistanceScalars::y12c, &ResistanceScalars::x11g, &ResistanceScalars::x12g,
-    &ResistanceScalars::y11g, &ResistanceScalars::y12g, &ResistanceScalars::y11h, &ResistanceScalars::y12h};
+inline constexpr std::array<double ResistanceScalars::*, 16> correction_functions = hydro::tabulated_functions;
 inline constexpr std::array<const char*, 16> correction_function_names{
     "X11A", "X12A", "Y11A", "Y12A", "Y11B", "Y12B", "X11C", "X12C",
     "Y11C", "Y12C", "X11G", "X12G", "Y11G", "Y12G", "Y11H", "Y12H"};

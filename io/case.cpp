@@ -136,6 +136,8 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     rs.lubrication.inner_cutoff = l.number("inner_cutoff", rs.lubrication.inner_cutoff, Range::non_negative());
     rs.lubrication.outer_cutoff = l.number("outer_cutoff", rs.lubrication.outer_cutoff, Range::positive());
     rs.lubrication.regularization = l.number("regularization", rs.lubrication.regularization, Range::non_negative());
+    rs.lubrication.exact_relative =
+        l.choice("functions", "singular", {"singular", "exact_relative"}) == "exact_relative";
     rs.lubrication_stress = l.choice("stress", "force_dipole", {"force_dipole", "stresslet"}) == "stresslet"
                                 ? LubricationStress::stresslet
                                 : LubricationStress::force_dipole;
@@ -273,6 +275,7 @@ YAML::Node to_yaml(const Case& c) {
     l["inner_cutoff"] = number_node(rs.lubrication.inner_cutoff);
     l["outer_cutoff"] = number_node(rs.lubrication.outer_cutoff);
     l["regularization"] = number_node(rs.lubrication.regularization);
+    l["functions"] = rs.lubrication.exact_relative ? "exact_relative" : "singular";
     l["stress"] = rs.lubrication_stress == LubricationStress::stresslet ? "stresslet" : "force_dipole";
     YAML::Node v = n["hydrodynamics"]["solver"];
     v["method"] = rs.solver == LinearSolver::cholesky ? "cholesky" : "cg";

@@ -1,11 +1,13 @@
 // Assembly of the pair lubrication law; formulas and sign conventions in lubrication.hpp.
 #include "dem/hydro/lubrication.hpp"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
 
 #include "core/error.hpp"
+#include "dem/hydro/equal_sphere_remainder.hpp"
 
 namespace suspend::hydro {
 namespace {
@@ -80,6 +82,13 @@ PairLubrication::PairLubrication(double a_i, double a_j, const LubricationParams
                      ")");
   // The ln(1/xi) terms change sign at xi = 1: beyond it the model would no longer dissipate (paper 002 App. B:
   // the outer cutoff cannot be arbitrarily large).
+  if (params.exact_relative) {
+    if (std::abs(a_j / a_i - 1.0) > 1e-12)
+      throw InputError("hydrodynamics.lubrication.functions = exact_relative needs equal spheres (the exact table is "
+                       "for lambda = 1; got radii " + std::to_string(a_i) + " and " + std::to_string(a_j) +
+                       "); use singular");
+    exact_relative_ = true;
+  }
   if (!(scaled_gap(params.outer_cutoff) < 1.0))
     throw InputError("lubrication.outer_cutoff = " + std::to_string(params.outer_cutoff) +
                      " is too large for radii " + std::to_string(a_i) + " and " + std::to_string(a_j) +
@@ -100,6 +109,19 @@ void PairLubrication::scalars(double gap, ResistanceScalars& from_i, ResistanceS
   const double log_inv_xi = std::log(1.0 / xi);  // shared by both perspectives
   from_i = lubrication_scalars(from_i_, xi, log_inv_xi);
   from_j = lubrication_scalars(from_j_, xi, log_inv_xi);
+  if (exact_relative_) {
+    const ResistanceScalars r = EqualSphereRemainder::instance().at(xi);
+    using S = ResistanceScalars;
+    constexpr std::array<std::array<double S::*, 2>, 5> relative{{
+        {&S::x11a, &S::x12a}, {&S::y11a, &S::y12a}, {&S::y11b, &S::y12b}, {&S::x11g, &S::x12g}, {&S::y11g, &S::y12g}}};
+    for (const auto& [f11, f12] : relative) {
+      const double d = 0.5 * (r.*f11 - r.*f12);
+      from_i.*f11 += d;
+      from_i.*f12 -= d;
+    }
+    for (auto f : {&S::x11c, &S::x12c, &S::y11c, &S::y12c, &S::y11h, &S::y12h}) from_i.*f += r.*f;
+    from_j = from_i;  // equal spheres: the same functions from either side
+  }
 }
 
 Matrix12 PairLubrication::resistance(const Vec3& n, double gap) const {

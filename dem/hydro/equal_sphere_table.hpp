@@ -8,7 +8,7 @@
 #pragma once
 #include <array>
 
-namespace suspend::coupling {
+namespace suspend::hydro {
 
 inline constexpr std::array<std::array<double, 17>, 38> equal_sphere_resistance_table{{
     {2.00001, 25003.5858, 2.91713802, -2.63932618, 1.0517854, 3.00544095, 37503.4164, 1.2979655, 0.213819451, -25002.9406, -2.19247292, 2.87662308, -0.150242722, 0.548189445, -37503.6901, -1.33662228, 1.12200876},
@@ -51,4 +51,4 @@ inline constexpr std::array<std::array<double, 17>, 38> equal_sphere_resistance_
     {4.5, 1.12811192, 1.03270416, -0.0137798136, 1.00014021, 1.00244206, 0.0734336915, 0.00194421923, -0.000168403608, -0.367308186, -0.178152677, 0.0766398449, -0.0109757426, 0.00583295327, -0.196474324, -0.00520172599, 0.0137844337},
 }};
 
-}  // namespace suspend::coupling
+}  // namespace suspend::hydro
