@@ -10,6 +10,7 @@
 // Solves A dx = r0 for dx; stops when |r0 - A dx| <= tolerance or after max_iterations.
 #pragma once
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -34,12 +35,15 @@ GmresReport gmres(Apply&& apply, Precondition&& precondition, const Eigen::Vecto
   v.reserve(m + 1);
   z.reserve(m);
   v.push_back(r0 / beta);
-  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(m + 1, m);
+  // Hessenberg columns grow with the iterations: a warm-started coupled solve takes 1-3 of max_iterations (200),
+  // and zeroing a full (m + 1) x m matrix (320 kB) in every solve is wasted memory traffic.
+  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(m + 1, std::min(m, 8));
   Eigen::VectorXd g = Eigen::VectorXd::Zero(m + 1), cs(m), sn(m);
   g(0) = beta;
   Eigen::VectorXd w(n);
   int k = 0;
   for (; k < m; ++k) {
+    if (k == h.cols()) h.conservativeResizeLike(Eigen::MatrixXd::Zero(m + 1, std::min(m, 2 * k)));
     z.emplace_back(n);
     precondition(v[k], z[k]);
     apply(z[k], w);

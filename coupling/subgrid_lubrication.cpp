@@ -70,8 +70,7 @@ void SubgridLubrication::scalars(int si, int sj, double gap, ResistanceScalars& 
   for (auto f : correction_functions) {
     from_i.*f = w * (ei.*f - fi.*f);
     from_j.*f = w * (ej.*f - fj.*f);
-  }
-}
+  }}
 
 void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const std::vector<int>& species) {
   links_.clear();
@@ -117,10 +116,20 @@ Vector12 SubgridLubrication::pair_forces(std::size_t k, const Eigen::VectorXd& d
 }
 
 void SubgridLubrication::add_velocity_forces(const Eigen::VectorXd& dv, Eigen::VectorXd& f) const {
+  // pair_forces without its strain term (zero here): once per corrected pair and Krylov iteration. The same bits
+  // as f += pair_forces(k, dv, 0) (negation is exact), up to the sign of zeros.
   for (std::size_t k = 0; k < links_.size(); ++k) {
-    const Vector12 fk = pair_forces(k, dv, 0.0);
-    f.segment<6>(6 * static_cast<Eigen::Index>(links_[k].i)) += fk.head<6>();
-    f.segment<6>(6 * static_cast<Eigen::Index>(links_[k].j)) += fk.tail<6>();
+    const Eigen::Index i = 6 * static_cast<Eigen::Index>(links_[k].i), j = 6 * static_cast<Eigen::Index>(links_[k].j);
+    Vector12 v;
+    v.head<6>() = dv.segment<6>(i);
+    v.tail<6>() = dv.segment<6>(j);
+    Vector12 fk = pair_resistance_product(delta_r_[k], normal_[k], v);
+    if (!link_contact_.empty() && link_contact_[k] >= 0) {
+      const ContactStep& c = contact_[link_contact_[k]];
+      fk += c.c.transpose() * (c.s * (c.c * v));
+    }
+    f.segment<6>(i) -= fk.head<6>();
+    f.segment<6>(j) -= fk.tail<6>();
   }
 }
 
