@@ -69,19 +69,44 @@ void CoupledMobility::solve_parts(const CoupledProblem& problem, SubgridLubricat
   }
 }
 
+namespace {
+
+void append(std::vector<double>& s, const Eigen::VectorXd& last, const Eigen::VectorXd& older) {
+  s.insert(s.end(), last.data(), last.data() + last.size());
+  if (older.size() == last.size()) s.insert(s.end(), older.data(), older.data() + older.size());
+}
+
+}  // namespace
+
 std::vector<double> CoupledMobility::warm_start_state() const {
-  std::vector<double> s(x_.data(), x_.data() + x_.size());
-  if (x_older_.size() == x_.size()) s.insert(s.end(), x_older_.data(), x_older_.data() + x_older_.size());
+  std::vector<double> s;
+  if (shear_warm_.last.size() == 0) {
+    append(s, x_, x_older_);
+  } else {
+    append(s, shear_warm_.last, shear_warm_.older);
+    append(s, force_warm_.last, force_warm_.older);
+  }
   return s;
 }
 
-void CoupledMobility::set_warm_start_state(const std::vector<double>& state) {
+void CoupledMobility::set_warm_start_state(const std::vector<double>& state, std::size_t n, bool parts) {
   forget_warm_start();
-  if (state.size() % 11 != 0) throw InputError("coupling: warm start must hold 11 or 22 values per particle");
-  const bool both = state.size() % 22 == 0 && !state.empty();
-  const Eigen::Index half = static_cast<Eigen::Index>(both ? state.size() / 2 : state.size());
-  x_ = Eigen::Map<const Eigen::VectorXd>(state.data(), half);
-  if (both) x_older_ = Eigen::Map<const Eigen::VectorXd>(state.data() + half, half);
+  if (state.empty()) return;
+  const std::size_t per = n == 0 ? 0 : state.size() / n;
+  const bool fits = n > 0 && state.size() == per * n && (parts ? (per == 22 || per == 44) : (per == 11 || per == 22));
+  if (!fits) return;  // another layout (a restart that changes the flow control, or the pairwise engine's): start cold
+  const Eigen::Index block = static_cast<Eigen::Index>(11 * n);
+  const auto read = [&](Eigen::Index k) { return Eigen::Map<const Eigen::VectorXd>(state.data() + k * block, block); };
+  if (!parts) {
+    x_ = read(0);
+    if (per == 22) x_older_ = read(1);
+    return;
+  }
+  const bool older = per == 44;
+  shear_warm_.last = read(0);
+  if (older) shear_warm_.older = read(1);
+  force_warm_.last = read(older ? 2 : 1);
+  if (older) force_warm_.older = read(3);
 }
 
 void CoupledMobility::stokes(const CoupledProblem& pb, const Eigen::VectorXd& f, const Eigen::VectorXd& s,

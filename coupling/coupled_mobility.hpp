@@ -89,13 +89,19 @@ class CoupledMobility {
                    CoupledResult& force_part);
 
   const Eigen::VectorXd& warm_start() const { return x_; }
-  // Everything the next warm start depends on (the last solution, and the one before it when extrapolating), for
-  // checkpoints: a restarted run then repeats the uninterrupted one bit for bit.
+  // Everything the next warm start depends on, for checkpoints: a restarted run then repeats the uninterrupted one
+  // bit for bit. 11 values per particle per stored solution: after `solve`, the last solution and, when
+  // extrapolating, the one before it (11 or 22 per particle); after `solve_parts`, the same for the shear part
+  // followed by the force part (22 or 44 per particle).
   std::vector<double> warm_start_state() const;
-  void set_warm_start_state(const std::vector<double>& state);
+  // `parts`: the next solves are solve_parts (imposed stress). A state that fits neither layout for n particles
+  // (e.g. a restart that switches the flow control) is ignored: the next solve starts cold.
+  void set_warm_start_state(const std::vector<double>& state, std::size_t n, bool parts);
   void forget_warm_start() {
     x_.resize(0);
     x_older_.resize(0);
+    shear_warm_ = {};
+    force_warm_ = {};
   }
   fcm::Solver& solver() { return solver_; }
   const fcm::Solver& solver() const { return solver_; }

@@ -81,8 +81,7 @@ FcmSimulation::FcmSimulation(SimulationState state, const Box& box, const Simula
   contacts_ = ContactStage(std::max(interaction_range(params_.contact), subgrid_ ? subgrid_->range() : 0.0),
                            params_.skin, p, state_.contacts);
   state_.contacts.clear();
-  if (state_.warm_start.size() == 11 * p.size() || state_.warm_start.size() == 22 * p.size())
-    mobility_->set_warm_start_state(state_.warm_start);
+  mobility_->set_warm_start_state(state_.warm_start, p.size(), params_.control == FlowControl::stress);
   state_.warm_start.clear();
 }
 

@@ -113,7 +113,11 @@ TEST(CouplingSimulation, ShortShearedRunIsDeterministicAndFinite) {
   EXPECT_GT(sa(0, 1), 1.0 + 2.5 * phi);  // interactions only add dissipation
 }
 
-TEST(CouplingSimulation, RestartFromACheckpointRepeatsTheUninterruptedRun) {
+namespace {
+
+// Six steps straight through, and three steps, a checkpoint (state_with_contacts: warm starts included) and three
+// more from it: the same positions bit for bit.
+void expect_restart_repeats_the_uninterrupted_run(const SimulationParams& params) {
   const Box box(9, 9, 9);
   Rng rng(11);
   std::uniform_real_distribution<double> jitter(-0.1, 0.1);
@@ -122,8 +126,6 @@ TEST(CouplingSimulation, RestartFromACheckpointRepeatsTheUninterruptedRun) {
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k)
         pos.push_back(Vec3(1.5 + 3.0 * i + jitter(rng), 1.5 + 3.0 * j + jitter(rng), 1.5 + 3.0 * k + jitter(rng)));
-  SimulationParams params;
-  params.time_step.max = 0.01;
   FcmSimulation whole(state_of(pos, std::vector<double>(pos.size(), 1.0)), box, params, fcm_params());
   SimulationState checkpoint;
   for (int s = 0; s < 6; ++s) {
@@ -138,6 +140,24 @@ TEST(CouplingSimulation, RestartFromACheckpointRepeatsTheUninterruptedRun) {
   }
   for (std::size_t i = 0; i < pos.size(); ++i)
     EXPECT_EQ(resumed.state().particles.position[i], whole.state().particles.position[i]) << i;
+  EXPECT_EQ(resumed.shear_rate(), whole.shear_rate());
+}
+
+}  // namespace
+
+TEST(CouplingSimulation, RestartFromACheckpointRepeatsTheUninterruptedRun) {
+  SimulationParams params;
+  params.time_step.max = 0.01;
+  expect_restart_repeats_the_uninterrupted_run(params);
+}
+
+// Under imposed stress the shear and force parts keep their own warm starts; both go into the checkpoint.
+TEST(CouplingSimulation, StressControlledRestartRepeatsTheUninterruptedRun) {
+  SimulationParams params;
+  params.time_step.max = 0.01;
+  params.control = FlowControl::stress;
+  params.shear_stress = 2.0;
+  expect_restart_repeats_the_uninterrupted_run(params);
 }
 
 TEST(CouplingSimulation, ImplicitContactsRelaxAnOverlapAsBackwardEulerWithTheExactResistance) {
