@@ -80,15 +80,12 @@ PairLubrication::PairLubrication(double a_i, double a_j, const LubricationParams
   if (!(a_i > 0.0) || !(a_j > 0.0))
     throw InputError("lubrication pair radii must be > 0 (got " + std::to_string(a_i) + ", " + std::to_string(a_j) +
                      ")");
+  if (params.exact_relative && std::abs(a_j / a_i - 1.0) > 1e-12)
+    throw InputError("hydrodynamics.lubrication.functions = exact_relative needs equal spheres (the exact table is "
+                     "for lambda = 1; got radii " + std::to_string(a_i) + " and " + std::to_string(a_j) +
+                     "); use singular");
   // The ln(1/xi) terms change sign at xi = 1: beyond it the model would no longer dissipate (paper 002 App. B:
   // the outer cutoff cannot be arbitrarily large).
-  if (params.exact_relative) {
-    if (std::abs(a_j / a_i - 1.0) > 1e-12)
-      throw InputError("hydrodynamics.lubrication.functions = exact_relative needs equal spheres (the exact table is "
-                       "for lambda = 1; got radii " + std::to_string(a_i) + " and " + std::to_string(a_j) +
-                       "); use singular");
-    exact_relative_ = true;
-  }
   if (!(scaled_gap(params.outer_cutoff) < 1.0))
     throw InputError("lubrication.outer_cutoff = " + std::to_string(params.outer_cutoff) +
                      " is too large for radii " + std::to_string(a_i) + " and " + std::to_string(a_j) +
@@ -109,7 +106,7 @@ void PairLubrication::scalars(double gap, ResistanceScalars& from_i, ResistanceS
   const double log_inv_xi = std::log(1.0 / xi);  // shared by both perspectives
   from_i = lubrication_scalars(from_i_, xi, log_inv_xi);
   from_j = lubrication_scalars(from_j_, xi, log_inv_xi);
-  if (exact_relative_) {
+  if (params_.exact_relative) {
     const ResistanceScalars r = EqualSphereRemainder::instance().at(xi);
     using S = ResistanceScalars;
     constexpr std::array<std::array<double S::*, 2>, 5> relative{{

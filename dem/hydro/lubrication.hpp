@@ -92,7 +92,6 @@ class PairLubrication {
   double a_i_, a_j_;
   LubricationParams params_;
   LubricationCoefficients from_i_, from_j_;
-  bool exact_relative_ = false;
 };
 
 }  // namespace suspend::hydro
