@@ -7,6 +7,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
+#include <memory>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -118,6 +120,60 @@ BENCHMARK(BM_FcmMobilitySolve)
     ->ArgsProduct({{64}, {40}, {1, 2}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// The acceptance ratios in one interleaved loop, so that a machine whose speed drifts between benchmarks (shared
+// hosts: the bare FFTs alone varied 3.4-5.9 ms between runs) cannot bias them: every iteration times one Stokes solve
+// (spread, FFTs, Green's function, interpolation; the plan is kept, as in the rigidity CG and a coupled step) and one
+// pass of the bare FFTs (3 forward + 3 inverse, FFTW measure plans of their own), each with 1 and with 2 threads
+// (separate solvers and plans per thread count). Counters: solve_over_bare_t1 / _t2 = summed solve time / summed
+// bare FFT time at 1 / 2 threads (target <= 2), solve_speedup_2t = 1-thread / 2-thread solve time (target >= 1.6),
+// bare_speedup_2t the same for the bare FFTs. Args: grid, phi in percent.
+static void BM_FcmAcceptanceRatios(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const double phi = 0.01 * static_cast<double>(state.range(1));
+  const double l = 0.5 * n;
+  const Suspension s = random_suspension(l, phi);
+  std::unique_ptr<Solver> solver[2];
+  std::unique_ptr<VectorFft> bare[2];
+  for (int t = 0; t < 2; ++t) {
+    omp_set_num_threads(t + 1);
+    solver[t] = std::make_unique<Solver>(Vec3::Constant(l), std::array<int, 3>{n, n, n});
+    bare[t] = std::make_unique<VectorFft>(std::array<int, 3>{n, n, n}, t + 1, FftPlanning::measure);
+    omp_set_num_threads(t + 1);
+    solver[t]->apply(s.pos, s.rad, s.force, s.torque, s.stresslet, 1.3);  // plan the footprints once
+  }
+  double solve_time[2] = {0.0, 0.0}, bare_time[2] = {0.0, 0.0};
+  for (auto _ : state) {
+    for (int t = 0; t < 2; ++t) {
+      omp_set_num_threads(t + 1);
+      double t0 = omp_get_wtime();
+      Disturbance d = solver[t]->apply(s.pos, s.rad, s.force, s.torque, s.stresslet, 1.3);
+      solve_time[t] += omp_get_wtime() - t0;
+      benchmark::DoNotOptimize(d.velocities.data());
+      t0 = omp_get_wtime();
+      bare[t]->forward(FftScaling::none);
+      bare[t]->inverse(FftScaling::none);
+      bare_time[t] += omp_get_wtime() - t0;
+    }
+  }
+  omp_set_num_threads(omp_get_num_procs());
+  const double k = 1e3 / static_cast<double>(state.iterations());
+  state.counters["particles"] = static_cast<double>(s.pos.size());
+  state.counters["solve_ms_t1"] = solve_time[0] * k;
+  state.counters["solve_ms_t2"] = solve_time[1] * k;
+  state.counters["bare_ms_t1"] = bare_time[0] * k;
+  state.counters["bare_ms_t2"] = bare_time[1] * k;
+  state.counters["solve_over_bare_t1"] = solve_time[0] / bare_time[0];
+  state.counters["solve_over_bare_t2"] = solve_time[1] / bare_time[1];
+  state.counters["solve_speedup_2t"] = solve_time[0] / solve_time[1];
+  state.counters["bare_speedup_2t"] = bare_time[0] / bare_time[1];
+  const SolveTimings& a = solver[0]->timings();
+  const SolveTimings& b = solver[1]->timings();
+  state.counters["spread_speedup_2t"] = (a.spread / a.solves) / (b.spread / b.solves);
+  state.counters["fft_speedup_2t"] = (a.fft / a.solves) / (b.fft / b.solves);
+  state.counters["interp_speedup_2t"] = (a.interpolate / a.solves) / (b.interpolate / b.solves);
+}
+BENCHMARK(BM_FcmAcceptanceRatios)->Args({64, 40})->Args({64, 10})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 static void BM_BareFfts(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));

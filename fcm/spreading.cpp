@@ -61,10 +61,12 @@ std::pair<int, int> balanced_slab(const std::vector<std::size_t>& plane_nodes, i
 // Row kernels. A row's node weights are w_M = zm m[i] and w_D = zd d[i] (support_plan.hpp: the tables carry the
 // y factor, the plane the z factor); with the plane's and row's constants folded into coefficients, a node update
 // is three multiply-adds per component:
-//   f_c[i] += a_c m[i] + b_c d[i] + c_c dd[i],
+//   f_c[i] += a_c m[i] + b_c d[i] + c_c dd[i],   dd[i] = dx_i d[i],  dx_i = dx0_j + t_i h_x
 // a = zm F, b = gs_c1 zd dy + gs_c2 zd dz, c = zd gs_c0, gs = -G / sD^2 (d_j Delta_D = -d_j/sD^2 Delta_D): a and c
-// are per plane, b per row. Rows are short (~7 nodes at h = a/2), so the row loop is instantiated for every length
-// up to kMaxFixed: the compiler unrolls and vectorises each one without loop prologue or remainder.
+// are per plane, b per row; t_i is the node's index in its y row's tables (dd is formed here, not tabulated: one
+// multiply-add per vector instead of a third table to stream). Rows are short (~7 nodes at h = a/2), so the row
+// loop is instantiated for every length up to kMaxFixed: the compiler unrolls and vectorises each one without loop
+// prologue or remainder.
 constexpr int kMaxFixed = 16;
 
 // On x86-64 with GCC the per-particle loops are also compiled for AVX2 + FMA and chosen at load time (ifunc), so
@@ -102,12 +104,39 @@ struct Visit {
   const SupportRow* rows;
   const double* tables;
   int width;
-  const double* dy;  // of y row j
+  const double* dy;   // of y row j
+  const double* dx0;  // of y row j
+  std::size_t table_begin;
+  double hx;
 };
 
 Visit visit_of(const SupportPlan& plan, std::size_t k) {
   return {plan.planes.data() + plan.plane_begin[k], plan.planes.data() + plan.plane_end[k], plan.rows.data(),
-          plan.tables.data(), plan.width[k], plan.dy.data() + plan.dy_begin[k]};
+          plan.tables.data(), plan.width[k], plan.dy.data() + plan.dy_begin[k], plan.dx0.data() + plan.dy_begin[k],
+          plan.table_begin[k], plan.spacing_x};
+}
+
+// Index of a row's first node in its y row's tables (support_plan.hpp), as a double.
+[[gnu::always_inline]] inline double first_table_node(const Visit& v, const SupportRow& r) {
+  return static_cast<double>(r.table - v.table_begin - 2 * static_cast<std::size_t>(v.width) * r.j);
+}
+
+// x offsets dx0 + (t + l) h_x of four consecutive table nodes from t.
+[[gnu::always_inline]] inline void x_offsets(double t, double hx, double dx0, Lanes& dx) {
+  Lanes h, x0;
+  broadcast(hx, h);
+  broadcast(dx0, x0);
+  dx = Lanes{t, t + 1.0, t + 2.0, t + 3.0} * h + x0;
+}
+
+// The next visit's tables are streamed from memory (~2 kB per visit at h = a/2, 6 MB per 64^3 pass at phi = 0.4);
+// fetching them while the present visit is processed takes their latency off the critical path. (Inlined by force:
+// GCC's interprocedural analysis finds a function that only prefetches free of side effects and drops its calls.)
+[[gnu::always_inline]] inline void prefetch_tables(const SupportPlan& plan, std::size_t k) {
+  if (k >= plan.visits()) return;
+  const char* p = reinterpret_cast<const char*>(plan.tables.data() + plan.table_begin[k]);
+  const char* end = reinterpret_cast<const char*>(plan.tables.data() + plan.table_begin[k + 1]);
+  for (; p < end; p += 64) __builtin_prefetch(p);
 }
 
 struct RowCoefficients {
@@ -115,8 +144,8 @@ struct RowCoefficients {
 };
 
 template <bool Monopole, int N>
-[[gnu::always_inline]] inline void spread_run(const double* __restrict m, const double* __restrict d,
-                                              const double* __restrict dd, const RowCoefficients& k,
+[[gnu::always_inline]] inline void spread_run(const double* __restrict m, const double* __restrict d, double t,
+                                              double hx, double dx0, const RowCoefficients& k,
                                               double* __restrict px, double* __restrict py, double* __restrict pz,
                                               int count) {
   const int n = N > 0 ? N : count;
@@ -124,14 +153,15 @@ template <bool Monopole, int N>
   const double c0 = k.c[0], c1 = k.c[1], c2 = k.c[2];
 #pragma omp simd
   for (int i = 0; i < n; ++i) {
+    const double dd = (dx0 + (t + i) * hx) * d[i];
     if constexpr (Monopole) {
-      px[i] += a0 * m[i] + b0 * d[i] + c0 * dd[i];
-      py[i] += a1 * m[i] + b1 * d[i] + c1 * dd[i];
-      pz[i] += a2 * m[i] + b2 * d[i] + c2 * dd[i];
+      px[i] += a0 * m[i] + b0 * d[i] + c0 * dd;
+      py[i] += a1 * m[i] + b1 * d[i] + c1 * dd;
+      pz[i] += a2 * m[i] + b2 * d[i] + c2 * dd;
     } else {
-      px[i] += b0 * d[i] + c0 * dd[i];
-      py[i] += b1 * d[i] + c1 * dd[i];
-      pz[i] += b2 * d[i] + c2 * dd[i];
+      px[i] += b0 * d[i] + c0 * dd;
+      py[i] += b1 * d[i] + c1 * dd;
+      pz[i] += b2 * d[i] + c2 * dd;
     }
   }
 }
@@ -140,18 +170,17 @@ template <bool Monopole, int N>
 // vector ending at the last node whose already-updated lanes get zero-weighted tables (so they are stored back
 // unchanged). Every load and store stays inside the row, which lies in one z plane: a thread's slab.
 template <bool Monopole, bool Masked>
-[[gnu::always_inline]] inline void spread_chunk(const double* tm, const double* td, const double* tdd,
+[[gnu::always_inline]] inline void spread_chunk(const double* tm, const double* td, const Lanes& dx,
                                                 const Lanes& keep, const Lanes (&k)[9], double* px, double* py,
                                                 double* pz) {
-  Lanes m, d, dd;
+  Lanes m, d;
   load_lanes(td, d);
-  load_lanes(tdd, dd);
   if constexpr (Monopole) load_lanes(tm, m);
   if constexpr (Masked) {
     d *= keep;
-    dd *= keep;
     if constexpr (Monopole) m *= keep;
   }
+  const Lanes dd = dx * d;
   double* p[3] = {px, py, pz};
   for (int c = 0; c < 3; ++c) {
     Lanes f;
@@ -163,16 +192,21 @@ template <bool Monopole, bool Masked>
 }
 
 template <bool Monopole, int N>
-[[gnu::always_inline]] inline void spread_lanes(const double* m, const double* d, const double* dd,
+[[gnu::always_inline]] inline void spread_lanes(const double* m, const double* d, double t, double hx, double dx0,
                                                 const Lanes (&k)[9], double* px, double* py, double* pz,
                                                 int count) {
   const int n = N > 0 ? N : count;
   int i = 0;
-  for (; i + 4 <= n; i += 4) spread_chunk<Monopole, false>(m + i, d + i, dd + i, k[0], k, px + i, py + i, pz + i);
+  Lanes dx;
+  for (; i + 4 <= n; i += 4) {
+    x_offsets(t + i, hx, dx0, dx);
+    spread_chunk<Monopole, false>(m + i, d + i, dx, k[0], k, px + i, py + i, pz + i);
+  }
   if (i < n) {
     const int o = n - 4, old = 4 - (n - i);
     const Lanes keep{old <= 0 ? 1.0 : 0.0, old <= 1 ? 1.0 : 0.0, old <= 2 ? 1.0 : 0.0, 1.0};
-    spread_chunk<Monopole, true>(m + o, d + o, dd + o, keep, k, px + o, py + o, pz + o);
+    x_offsets(t + o, hx, dx0, dx);
+    spread_chunk<Monopole, true>(m + o, d + o, dx, keep, k, px + o, py + o, pz + o);
   }
 }
 
@@ -237,7 +271,7 @@ SUSPEND_SIMD_CLONES void spread_particle(const Visit& v, const Vec3& f, const Ma
       for (int i = 0; i < 3; ++i) k[3 + i] = g1[i] * wy + e[i];
       const double* m = v.tables + r->table;
       const double* d = m + w;
-      const double* dd = d + w;
+      const double t = first_table_node(v, *r), dx0 = v.dx0[r->j];
       double* px = fx + r->first;
       double* py = fy + r->first;
       double* pz = fz + r->first;
@@ -253,9 +287,9 @@ SUSPEND_SIMD_CLONES void spread_particle(const Visit& v, const Vec3& f, const Ma
                 c.b[i] = k[3 + i][0];
                 c.c[i] = k[6 + i][0];
               }
-              spread_run<Monopole, N>(m, d, dd, c, px, py, pz, n);
+              spread_run<Monopole, N>(m, d, t, v.hx, dx0, c, px, py, pz, n);
             } else {
-              spread_lanes<Monopole, N>(m, d, dd, k, px, py, pz, n);
+              spread_lanes<Monopole, N>(m, d, t, v.hx, dx0, k, px, py, pz, n);
             }
           });
     }
@@ -278,32 +312,30 @@ struct ParticleLanes {
 };
 
 // Loads 4 lanes from each pointer (Short: the first N, zero-filled), scales the table lanes by `keep` (1 or 0) if
-// Masked and adds the nine products (u m and u dd into the plane sums, u d into the row's).
+// Masked, forms dd = dx d and adds the nine products (u m and u dd into the plane sums, u d into the row's).
 template <bool Short, bool Masked, int N>
-[[gnu::always_inline]] inline void add_chunk(const double* tm, const double* td, const double* tdd, const double* px,
+[[gnu::always_inline]] inline void add_chunk(const double* tm, const double* td, const Lanes& dx, const double* px,
                                              const double* py, const double* pz, const Lanes& keep, PlaneSums& s,
                                              Lanes (&rd)[3]) {
-  Lanes m, d, dd, ux, uy, uz;
+  Lanes m, d, ux, uy, uz;
   if constexpr (Short) {
     load_short<N>(tm, m);
     load_short<N>(td, d);
-    load_short<N>(tdd, dd);
     load_short<N>(px, ux);
     load_short<N>(py, uy);
     load_short<N>(pz, uz);
   } else {
     load_lanes(tm, m);
     load_lanes(td, d);
-    load_lanes(tdd, dd);
     load_lanes(px, ux);
     load_lanes(py, uy);
     load_lanes(pz, uz);
     if constexpr (Masked) {
       m *= keep;
       d *= keep;
-      dd *= keep;
     }
   }
+  const Lanes dd = dx * d;
   s.m[0] += ux * m;
   s.m[1] += uy * m;
   s.m[2] += uz * m;
@@ -315,22 +347,28 @@ template <bool Short, bool Masked, int N>
   s.t[2] += uz * dd;
 }
 
-// Sums of a row of N nodes (N = 0: any length >= 4, given by count).
+// Sums of a row of N nodes (N = 0: any length >= 4, given by count) whose first node is table node t.
 template <int N>
-[[gnu::always_inline]] inline void interpolate_row(const double* m, const double* d, const double* dd,
+[[gnu::always_inline]] inline void interpolate_row(const double* m, const double* d, double t, double hx, double dx0,
                                                    const double* ux, const double* uy, const double* uz, int count,
                                                    PlaneSums& s, Lanes (&rd)[3]) {
   const Lanes all{1.0, 1.0, 1.0, 1.0};
+  Lanes dx;
   if constexpr (N > 0 && N < 4) {
-    add_chunk<true, false, N>(m, d, dd, ux, uy, uz, all, s, rd);
+    x_offsets(t, hx, dx0, dx);
+    add_chunk<true, false, N>(m, d, dx, ux, uy, uz, all, s, rd);
   } else {
     const int n = N > 0 ? N : count;
     int i = 0;
-    for (; i + 4 <= n; i += 4) add_chunk<false, false, 0>(m + i, d + i, dd + i, ux + i, uy + i, uz + i, all, s, rd);
+    for (; i + 4 <= n; i += 4) {
+      x_offsets(t + i, hx, dx0, dx);
+      add_chunk<false, false, 0>(m + i, d + i, dx, ux + i, uy + i, uz + i, all, s, rd);
+    }
     if (i < n) {  // the last 4 nodes; lanes before node i were counted above
       const int o = n - 4, old = 4 - (n - i);
       const Lanes keep{old <= 0 ? 1.0 : 0.0, old <= 1 ? 1.0 : 0.0, old <= 2 ? 1.0 : 0.0, 1.0};
-      add_chunk<false, true, 0>(m + o, d + o, dd + o, ux + o, uy + o, uz + o, keep, s, rd);
+      x_offsets(t + o, hx, dx0, dx);
+      add_chunk<false, true, 0>(m + o, d + o, dx, ux + o, uy + o, uz + o, keep, s, rd);
     }
   }
 }
@@ -348,12 +386,13 @@ SUSPEND_SIMD_CLONES void interpolate_particle(const Visit& v, const double* ux, 
     for (const SupportRow* r = v.rows + q->row_begin; r != rows_end; ++r) {
       const double* m = v.tables + r->table;
       const double* d = m + w;
-      const double* dd = d + w;
+      const double t = first_table_node(v, *r), dx0 = v.dx0[r->j];
       const std::size_t o = r->first;
       const int n = r->count;
       Lanes rd[3] = {};
-      with_fixed_length(
-          n, [&](auto len) { interpolate_row<decltype(len)::value>(m, d, dd, ux + o, uy + o, uz + o, n, s, rd); });
+      with_fixed_length(n, [&](auto len) {
+        interpolate_row<decltype(len)::value>(m, d, t, v.hx, dx0, ux + o, uy + o, uz + o, n, s, rd);
+      });
       // dy is constant along the row: sum u dy d = dy sum u d.
       Lanes dy;
       broadcast(v.dy[r->j], dy);
@@ -388,6 +427,12 @@ SUSPEND_SIMD_CLONES void interpolate_particle(const Visit& v, const double* ux, 
   return left >= 8 ? static_cast<__mmask8>(0xFF) : static_cast<__mmask8>((1u << left) - 1u);
 }
 
+// dx0 + (t + l) h_x for the 8 nodes from table node t (x_offsets in 8 lanes).
+[[gnu::always_inline]] SUSPEND_AVX512 inline __m512d x_offsets_wide(double t, __m512d hx, __m512d dx0) {
+  const __m512d lane = _mm512_set_pd(7.0, 6.0, 5.0, 4.0, 3.0, 2.0, 1.0, 0.0);
+  return _mm512_add_pd(_mm512_mul_pd(_mm512_add_pd(lane, _mm512_set1_pd(t)), hx), dx0);
+}
+
 template <bool Monopole, bool Inside>
 SUSPEND_AVX512 void spread_particle_wide(const Visit& v, const Vec3& f, const Mat3& gs, std::uint32_t zb,
                                          std::uint32_t ze, double* fx, double* fy, double* fz) {
@@ -400,10 +445,11 @@ SUSPEND_AVX512 void spread_particle_wide(const Visit& v, const Vec3& f, const Ma
   }
   double* const field[3] = {fx, fy, fz};
   const std::ptrdiff_t w = v.width;
+  const __m512d hx = _mm512_set1_pd(v.hx);
   for (const SupportPlane* q = v.planes; q != v.planes_end; ++q) {
     if constexpr (!Inside)
       if (q->iz < zb || q->iz >= ze) continue;
-    // f_c += (F_c zm) m + (gs_c1 zd dy + gs_c2 zd dz) d + (gs_c0 zd) dd   (RowCoefficients, as vectors)
+    // f_c += (F_c zm) m + (gs_c1 zd dy + gs_c2 zd dz) d + (gs_c0 zd) dx d   (RowCoefficients, as vectors)
     const __m512d zm = _mm512_set1_pd(q->zm), zd = _mm512_set1_pd(q->zd), zdz = _mm512_set1_pd(q->zd * q->dz);
     __m512d ka[3], kc[3], ke[3];
     for (int c = 0; c < 3; ++c) {
@@ -419,21 +465,25 @@ SUSPEND_AVX512 void spread_particle_wide(const Visit& v, const Vec3& f, const Ma
       for (int c = 0; c < 3; ++c) kb[c] = _mm512_fmadd_pd(g1[c], wy, ke[c]);
       const double* m = v.tables + r->table;
       const double* d = m + w;
-      const double* dd = d + w;
+      const double t = first_table_node(v, *r);
+      const __m512d dx0 = _mm512_set1_pd(v.dx0[r->j]);
       const int n = r->count;
+      double* const p0 = field[0] + r->first;  // (the stores could alias *r: read it once)
+      double* const p1 = field[1] + r->first;
+      double* const p2 = field[2] + r->first;
       for (int i = 0; i < n; i += 8) {
         const __mmask8 k = row_mask(n - i);
         const __m512d vd = _mm512_maskz_loadu_pd(k, d + i);
-        const __m512d vdd = _mm512_maskz_loadu_pd(k, dd + i);
+        const __m512d vdd = _mm512_mul_pd(x_offsets_wide(t + i, hx, dx0), vd);
         __m512d vm = _mm512_setzero_pd();
         if constexpr (Monopole) vm = _mm512_maskz_loadu_pd(k, m + i);
+        double* const p[3] = {p0 + i, p1 + i, p2 + i};
         for (int c = 0; c < 3; ++c) {
-          double* p = field[c] + r->first + i;
-          __m512d x = _mm512_maskz_loadu_pd(k, p);
+          __m512d x = _mm512_maskz_loadu_pd(k, p[c]);
           x = _mm512_fmadd_pd(kb[c], vd, x);
           x = _mm512_fmadd_pd(kc[c], vdd, x);
           if constexpr (Monopole) x = _mm512_fmadd_pd(ka[c], vm, x);
-          _mm512_mask_storeu_pd(p, k, x);
+          _mm512_mask_storeu_pd(p[c], k, x);
         }
       }
     }
@@ -447,12 +497,14 @@ SUSPEND_AVX512 void spread_particle_wide(const Visit& v, const Vec3& f, const Ma
   return ((x[0] + x[4]) + (x[1] + x[5])) + ((x[2] + x[6]) + (x[3] + x[7]));
 }
 
+// The twelve plane sums live in registers; the twelve particle sums they are folded into once per plane live in
+// memory (all 24 in registers left too few for the row's operands, which GCC then spilled in every row).
 SUSPEND_AVX512 void interpolate_particle_wide(const Visit& v, const double* ux, const double* uy, const double* uz,
                                               Vec3& u, Mat3& a) {
-  __m512d su[3], s0[3], s1[3], s2[3];
-  for (int c = 0; c < 3; ++c) su[c] = s0[c] = s1[c] = s2[c] = _mm512_setzero_pd();
+  alignas(64) double sums[12][8] = {};  // u, then the columns 0, 1, 2 of A, each per component
   const double* const field[3] = {ux, uy, uz};
   const std::ptrdiff_t w = v.width;
+  const __m512d hx = _mm512_set1_pd(v.hx);
   for (const SupportPlane* q = v.planes; q != v.planes_end; ++q) {
     __m512d pm[3], pt[3], pd[3], py[3];
     for (int c = 0; c < 3; ++c) pm[c] = pt[c] = pd[c] = py[c] = _mm512_setzero_pd();
@@ -460,14 +512,15 @@ SUSPEND_AVX512 void interpolate_particle_wide(const Visit& v, const double* ux, 
     for (const SupportRow* r = v.rows + q->row_begin; r != rows_end; ++r) {
       const double* m = v.tables + r->table;
       const double* d = m + w;
-      const double* dd = d + w;
+      const double t = first_table_node(v, *r);
+      const __m512d dx0 = _mm512_set1_pd(v.dx0[r->j]);
       const int n = r->count;
       const __m512d dy = _mm512_set1_pd(v.dy[r->j]);
       for (int i = 0; i < n; i += 8) {
         const __mmask8 k = row_mask(n - i);
         const __m512d vm = _mm512_maskz_loadu_pd(k, m + i);
         const __m512d vd = _mm512_maskz_loadu_pd(k, d + i);
-        const __m512d vdd = _mm512_maskz_loadu_pd(k, dd + i);
+        const __m512d vdd = _mm512_mul_pd(x_offsets_wide(t + i, hx, dx0), vd);
         const __m512d vdy = _mm512_mul_pd(dy, vd);
         for (int c = 0; c < 3; ++c) {
           const __m512d x = _mm512_maskz_loadu_pd(k, field[c] + r->first + i);
@@ -480,17 +533,17 @@ SUSPEND_AVX512 void interpolate_particle_wide(const Visit& v, const double* ux, 
     }
     const __m512d zm = _mm512_set1_pd(q->zm), zd = _mm512_set1_pd(q->zd), zdz = _mm512_set1_pd(q->zd * q->dz);
     for (int c = 0; c < 3; ++c) {
-      su[c] = _mm512_fmadd_pd(zm, pm[c], su[c]);
-      s0[c] = _mm512_fmadd_pd(zd, pt[c], s0[c]);
-      s1[c] = _mm512_fmadd_pd(zd, py[c], s1[c]);
-      s2[c] = _mm512_fmadd_pd(zdz, pd[c], s2[c]);
+      _mm512_store_pd(sums[c], _mm512_fmadd_pd(zm, pm[c], _mm512_load_pd(sums[c])));
+      _mm512_store_pd(sums[3 + c], _mm512_fmadd_pd(zd, pt[c], _mm512_load_pd(sums[3 + c])));
+      _mm512_store_pd(sums[6 + c], _mm512_fmadd_pd(zd, py[c], _mm512_load_pd(sums[6 + c])));
+      _mm512_store_pd(sums[9 + c], _mm512_fmadd_pd(zdz, pd[c], _mm512_load_pd(sums[9 + c])));
     }
   }
   for (int c = 0; c < 3; ++c) {
-    u[c] = lane_sum_wide(su[c]);
-    a(c, 0) = lane_sum_wide(s0[c]);
-    a(c, 1) = lane_sum_wide(s1[c]);
-    a(c, 2) = lane_sum_wide(s2[c]);
+    u[c] = lane_sum_wide(_mm512_load_pd(sums[c]));
+    a(c, 0) = lane_sum_wide(_mm512_load_pd(sums[3 + c]));
+    a(c, 1) = lane_sum_wide(_mm512_load_pd(sums[6 + c]));
+    a(c, 2) = lane_sum_wide(_mm512_load_pd(sums[9 + c]));
   }
 }
 
@@ -535,6 +588,7 @@ void spread(const SupportPlan& plan, std::span<const Vec3> forces, std::span<con
     const auto nz = static_cast<std::uint32_t>(plan.plane_nodes.size());
     for (std::size_t k = 0; k < count; ++k) {
       if (!plan.touches_planes(k, zb, ze, nz)) continue;
+      prefetch_tables(plan, k + 1);
       const std::size_t p = plan.particle[k];
       const Vec3 f = has_f ? forces[p] : Vec3::Zero();
       // d/dx_j Delta_D = -d_j / sigma_D^2 Delta_D, so G_ij d_j Delta_D = (G d)_i w_D (-1 / sigma_D^2).
@@ -565,6 +619,7 @@ void interpolate(const SupportPlan& plan, const double* field, std::size_t strid
 #pragma omp parallel for schedule(dynamic, 16)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     const std::size_t ku = static_cast<std::size_t>(k);
+    prefetch_tables(plan, ku + 1);
     Vec3 u;
     Mat3 a;
     const Visit v = visit_of(plan, ku);

@@ -72,11 +72,11 @@ struct AxisTables {
   std::vector<int> kx0, iy;
 };
 
-// Fills the envelope's x tables (y row j at tables + 3 j width: m, d, dd with the row's y factor, support_plan.hpp)
+// Fills the envelope's x tables (y row j at tables + 2 j width: m, d with the row's y factor, support_plan.hpp)
 // and writes its planes and rows from `plane` and `row` on; returns the ends. `table` is the offset of the
 // particle's tables in the plan.
 void plan_envelope(const ShearedGrid& g, const Envelope& e, const Extent& x, std::size_t table, double* tables,
-                   double* row_dy, AxisTables& t, SupportPlane* plane, SupportRow* row, SupportPlane*& plane_end,
+                   double* row_dy, double* row_dx0, AxisTables& t, SupportPlane* plane, SupportRow* row, SupportPlane*& plane_end,
                    SupportRow*& row_end, std::size_t row_offset) {
   const double hx = g.spacing.x(), hy = g.spacing.y(), hz = g.spacing.z();
   const double inv_hx = 1.0 / hx, r2 = e.support * e.support;
@@ -100,12 +100,11 @@ void plan_envelope(const ShearedGrid& g, const Envelope& e, const Extent& x, std
     t.dx0[j] = t.kx0[j] * hx - row_centre(g, e, x.ky0 + j);
     t.iy[j] = periodic_index(x.ky0 + j, g.n[1]);
     row_dy[j] = (x.ky0 + j) * hy - e.centre.y();
-    double* m = tables + 3 * static_cast<std::size_t>(j) * x.width;
+    row_dx0[j] = t.dx0[j];
+    double* m = tables + 2 * static_cast<std::size_t>(j) * x.width;
     double* d = m + x.width;
-    double* dd = d + x.width;
     gaussian_row(t.dx0[j], hx, am, qm, x.width, m, t.ym[j]);
     gaussian_row(t.dx0[j], hx, ad, qd, x.width, d, t.yd[j]);
-    for (int i = 0; i < x.width; ++i) dd[i] = (t.dx0[j] + i * hx) * d[i];
   }
   for (int kz = x.kz0; kz <= x.kz1; ++kz) {
     const double dz = kz * hz - e.centre.z();
@@ -127,7 +126,7 @@ void plan_envelope(const ShearedGrid& g, const Envelope& e, const Extent& x, std
       const int ib = std::min(floor_int((-t.dx0[j] + rx) * inv_hx), x.width - 1);
       if (ib < ia) continue;
       const std::size_t base = g.index(0, t.iy[j], static_cast<int>(p.iz));
-      const std::size_t row_table = table + 3 * static_cast<std::size_t>(j) * x.width;
+      const std::size_t row_table = table + 2 * static_cast<std::size_t>(j) * x.width;
       int ix = t.kx0[j] + ia;
       if (ix < 0 || ix >= nx) ix = periodic_index(ix, nx);
       const int total = ib - ia + 1, first_run = std::min(total, nx - ix);
@@ -168,11 +167,14 @@ void plan_support(const ShearedGrid& g, std::span<const Envelope> envelopes, std
   const std::size_t n = envelopes.size();
   const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(n);
   plan.cell_volume = g.cell_volume();
+  plan.spacing_x = g.spacing.x();
   plan.particle.resize(n);
   plan.dipole_scale.resize(n);
   plan.dy_begin.assign(n + 1, 0);
   plan.width.resize(n);
-  std::vector<std::size_t> table_begin(n + 1, 0), row_begin(n + 1, 0);
+  std::vector<std::size_t>& table_begin = plan.table_begin;
+  table_begin.assign(n + 1, 0);
+  std::vector<std::size_t> row_begin(n + 1, 0);
   plan.plane_begin.assign(n + 1, 0);  // (sizes only grow or shrink: a reused plan is not zero-filled again)
   plan.plane_end.resize(n);
   plan.z_first.resize(n);
@@ -200,7 +202,7 @@ void plan_support(const ShearedGrid& g, std::span<const Envelope> envelopes, std
     plan.width[ku] = static_cast<std::uint16_t>(x.width);
     plan.plane_begin[ku + 1] = planes;
     row_begin[ku + 1] = slots * planes;
-    table_begin[ku + 1] = 3 * static_cast<std::size_t>(x.rows()) * x.width;
+    table_begin[ku + 1] = 2 * static_cast<std::size_t>(x.rows()) * x.width;
   }
   for (std::size_t k = 0; k < n; ++k) {
     plan.plane_begin[k + 1] += plan.plane_begin[k];
@@ -215,6 +217,7 @@ void plan_support(const ShearedGrid& g, std::span<const Envelope> envelopes, std
   plan.rows.resize(row_begin[n]);
   plan.tables.resize(table_begin[n]);
   plan.dy.resize(plan.dy_begin[n]);
+  plan.dx0.resize(plan.dy_begin[n]);
   // Pass 2: tables, planes and rows.
 #pragma omp parallel
   {
@@ -226,7 +229,8 @@ void plan_support(const ShearedGrid& g, std::span<const Envelope> envelopes, std
     const Extent x = extent_of(g, e);
     SupportPlane* plane_end = nullptr;
     SupportRow* row_end = nullptr;
-    plan_envelope(g, e, x, table_begin[ku], plan.tables.data() + table_begin[ku], plan.dy.data() + plan.dy_begin[ku], axis,
+    plan_envelope(g, e, x, table_begin[ku], plan.tables.data() + table_begin[ku], plan.dy.data() + plan.dy_begin[ku],
+                  plan.dx0.data() + plan.dy_begin[ku], axis,
                   plan.planes.data() + plan.plane_begin[ku], plan.rows.data() + row_begin[ku], plane_end, row_end,
                   row_begin[ku]);
     plan.plane_end[ku] = static_cast<std::size_t>(plane_end - plan.planes.data());
