@@ -7,6 +7,7 @@
 // Usage: bench_coupling [steps=10] [warmup=5] [cache_dir=coupling_cache] [krylov_tolerance=1e-4]
 //                       [near_field=cg|cholesky] [preconditioner_cutoff=2.2] [inner_max_iterations=5]
 //                       [inner_tolerance=1e-2] [min_gap=0.01 (of the initial packing, a)]
+//                       [truncation_widths=4.5 (fcm.truncation_widths)]
 // Deterministic instruction counts of the timed steps only (the bare FFTs and the warm-up are not collected):
 //   OMP_NUM_THREADS=1 valgrind --tool=callgrind --collect-atstart=no build/bin/bench_coupling 4 5 coupling_cache
 //   callgrind_annotate --inclusive=yes callgrind.out.<pid>
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
   FcmParams fcm;
   fcm.cache_dir = cache;
   fcm.krylov_tolerance = tolerance;
+  if (argc > 10) fcm.truncation_widths = std::atof(argv[10]);
   const bool cholesky = argc > 5 && std::string(argv[5]) == "cholesky";
   if (argc > 6) fcm.preconditioner_cutoff = std::atof(argv[6]);
   double t0 = omp_get_wtime();
