@@ -1,5 +1,5 @@
 // One coupled FCM step (FcmSimulation: contacts + sub-grid lubrication + FCM/GMRES velocity solve) at phi = 0.45,
-// 440 monodisperse spheres (a = 1) in a (16 a)^3 box, h = a/2 (32^3 grid), truncation 4.5 widths, soft-repulsion
+// 440 monodisperse spheres (a = 1) in a (16 a)^3 box, h = a/2 (32^3 grid), truncation 4 widths, soft-repulsion
 // contacts, simple shear, adaptive time step, warm-started GMRES. After `warmup` steps, `steps` steps are timed
 // and split into contacts, sub-grid work (assembly + applications), the near-field preconditioner (sparse
 // Cholesky), the FCM Stokes solves and the rest; every time is reported as a ratio to one bare FFT Stokes solve
@@ -7,7 +7,7 @@
 // Usage: bench_coupling [steps=10] [warmup=5] [cache_dir=coupling_cache] [krylov_tolerance=1e-4]
 //                       [near_field=cg|cholesky] [preconditioner_cutoff=2.2] [inner_max_iterations=5]
 //                       [inner_tolerance=1e-2] [min_gap=0.01 (of the initial packing, a)]
-//                       [truncation_widths=4.5 (fcm.truncation_widths)]
+//                       [truncation_widths=4 (fcm.truncation_widths)]
 // Deterministic instruction counts of the timed steps only (the bare FFTs and the warm-up are not collected):
 //   OMP_NUM_THREADS=1 valgrind --tool=callgrind --collect-atstart=no build/bin/bench_coupling 4 5 coupling_cache
 //   callgrind_annotate --inclusive=yes callgrind.out.<pid>

@@ -28,7 +28,7 @@ namespace suspend::coupling {
 struct FcmPairTableParams {
   double a_i = 1.0, a_j = 1.0;        // radii (a_1 units); the table is stored for a_i <= a_j
   double grid_spacing = 0.5;          // h of the run
-  double truncation_widths = 4.5;     // fcm::SolverOptions::truncation_widths of the run
+  double truncation_widths = 4.0;     // fcm::SolverOptions::truncation_widths of the run
   double s_min = 1.8, s_max = 3.5;    // range of s' = 2 r/(a_i + a_j)
   double ds = 0.05;                   // table spacing in s'
   double box_factor = 12.0;           // L = box_factor (a_i + a_j), rounded up to whole grid cells

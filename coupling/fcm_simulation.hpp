@@ -35,7 +35,7 @@ namespace suspend {
 
 struct FcmParams {
   double grid_spacing = 0.0;       // h (a_1); <= 0 means half the smallest radius. Rounded to whole cells per box side
-  double truncation_widths = 4.5;  // Gaussian envelopes cut at this many sigma_M (fcm::SolverOptions)
+  double truncation_widths = 4.0;  // Gaussian envelopes cut at this many sigma_M (fcm::SolverOptions)
   double krylov_tolerance = 1e-4;  // relative residual of the coupled solve (coupled_mobility.hpp)
   int max_iterations = 200;        // GMRES iterations (one Stokes solve each) before NumericalError
   bool warm_start = true;          // start from the previous steps' velocities and stresslets (extrapolated);

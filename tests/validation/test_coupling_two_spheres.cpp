@@ -1,5 +1,5 @@
 // FCM + sub-grid correction against the exact two-sphere functions (tests/data/two_sphere_resistance_table.txt,
-// Jeffrey & Onishi 1984 / Townsend; Kim & Karrila normalisation), equal spheres, h = a/2, truncation 4.5 widths.
+// Jeffrey & Onishi 1984 / Townsend; Kim & Karrila normalisation), equal spheres, h = a/2, truncation 4 widths (the default).
 //  * Squeeze and shear (A, B, C): 12 coupled mobility solves with unit loads (coupled_mobility.hpp, FCM + sub-grid
 //    resistance), inverted, and the resistance functions compared at xi = 0.01, 0.02, 0.05, 0.1: within 3% of the
 //    exact value (or 3% of 0.2, in isolated-sphere units, for functions whose exact value is below 0.2).
