@@ -117,16 +117,22 @@ Visit visit_of(const SupportPlan& plan, std::size_t k) {
 }
 
 // Index of a row's first node in its y row's tables (support_plan.hpp), as a double.
+// (An int: a 64-bit unsigned conversion to double is a long sequence without AVX-512; offsets fit 32 bits.)
 [[gnu::always_inline]] inline double first_table_node(const Visit& v, const SupportRow& r) {
-  return static_cast<double>(r.table - v.table_begin - 2 * static_cast<std::size_t>(v.width) * r.j);
+  return static_cast<double>(static_cast<int>(r.table - v.table_begin) - 2 * v.width * static_cast<int>(r.j));
 }
 
-// x offsets dx0 + (t + l) h_x of four consecutive table nodes from t.
-[[gnu::always_inline]] inline void x_offsets(double t, double hx, double dx0, Lanes& dx) {
-  Lanes h, x0;
-  broadcast(hx, h);
-  broadcast(dx0, x0);
-  dx = Lanes{t, t + 1.0, t + 2.0, t + 3.0} * h + x0;
+// x offsets x + l h_x of the row's first four nodes, x = dx0_j + t h_x its first node's (once per row) ...
+[[gnu::always_inline]] inline void x_offsets(const Visit& v, const SupportRow& r, Lanes& dx) {
+  Lanes x;
+  broadcast(v.dx0[r.j] + first_table_node(v, r) * v.hx, x);
+  dx = x + Lanes{0.0, v.hx, 2.0 * v.hx, 3.0 * v.hx};
+}
+// ... and of the four nodes i .. i + 3 of the row from them.
+[[gnu::always_inline]] inline void x_offsets_from(const Lanes& first, double hx, int i, Lanes& dx) {
+  Lanes shift;
+  broadcast(i * hx, shift);
+  dx = first + shift;
 }
 
 // The next visit's tables are streamed from memory (~2 kB per visit at h = a/2, 6 MB per 64^3 pass at phi = 0.4);
@@ -144,8 +150,8 @@ struct RowCoefficients {
 };
 
 template <bool Monopole, int N>
-[[gnu::always_inline]] inline void spread_run(const double* __restrict m, const double* __restrict d, double t,
-                                              double hx, double dx0, const RowCoefficients& k,
+[[gnu::always_inline]] inline void spread_run(const double* __restrict m, const double* __restrict d, double x,
+                                              double hx, const RowCoefficients& k,
                                               double* __restrict px, double* __restrict py, double* __restrict pz,
                                               int count) {
   const int n = N > 0 ? N : count;
@@ -153,7 +159,7 @@ template <bool Monopole, int N>
   const double c0 = k.c[0], c1 = k.c[1], c2 = k.c[2];
 #pragma omp simd
   for (int i = 0; i < n; ++i) {
-    const double dd = (dx0 + (t + i) * hx) * d[i];
+    const double dd = (x + i * hx) * d[i];
     if constexpr (Monopole) {
       px[i] += a0 * m[i] + b0 * d[i] + c0 * dd;
       py[i] += a1 * m[i] + b1 * d[i] + c1 * dd;
@@ -192,20 +198,20 @@ template <bool Monopole, bool Masked>
 }
 
 template <bool Monopole, int N>
-[[gnu::always_inline]] inline void spread_lanes(const double* m, const double* d, double t, double hx, double dx0,
+[[gnu::always_inline]] inline void spread_lanes(const double* m, const double* d, const Lanes& first, double hx,
                                                 const Lanes (&k)[9], double* px, double* py, double* pz,
                                                 int count) {
   const int n = N > 0 ? N : count;
   int i = 0;
-  Lanes dx;
-  for (; i + 4 <= n; i += 4) {
-    x_offsets(t + i, hx, dx0, dx);
+  Lanes dx = first, step;
+  broadcast(4.0 * hx, step);
+  for (; i + 4 <= n; i += 4, dx += step) {
     spread_chunk<Monopole, false>(m + i, d + i, dx, k[0], k, px + i, py + i, pz + i);
   }
   if (i < n) {
     const int o = n - 4, old = 4 - (n - i);
     const Lanes keep{old <= 0 ? 1.0 : 0.0, old <= 1 ? 1.0 : 0.0, old <= 2 ? 1.0 : 0.0, 1.0};
-    x_offsets(t + o, hx, dx0, dx);
+    x_offsets_from(first, hx, o, dx);
     spread_chunk<Monopole, true>(m + o, d + o, dx, keep, k, px + o, py + o, pz + o);
   }
 }
@@ -271,14 +277,15 @@ SUSPEND_SIMD_CLONES void spread_particle(const Visit& v, const Vec3& f, const Ma
       for (int i = 0; i < 3; ++i) k[3 + i] = g1[i] * wy + e[i];
       const double* m = v.tables + r->table;
       const double* d = m + w;
-      const double t = first_table_node(v, *r), dx0 = v.dx0[r->j];
+      Lanes first;
+      x_offsets(v, *r, first);
       double* px = fx + r->first;
       double* py = fy + r->first;
       double* pz = fz + r->first;
       const int n = r->count;
       with_fixed_length(
           n,
-          [&](auto len) {
+          [&](auto len) __attribute__((always_inline)) {
             constexpr int N = decltype(len)::value;
             if constexpr (N > 0 && N < 4) {
               RowCoefficients c{};
@@ -287,9 +294,9 @@ SUSPEND_SIMD_CLONES void spread_particle(const Visit& v, const Vec3& f, const Ma
                 c.b[i] = k[3 + i][0];
                 c.c[i] = k[6 + i][0];
               }
-              spread_run<Monopole, N>(m, d, t, v.hx, dx0, c, px, py, pz, n);
+              spread_run<Monopole, N>(m, d, first[0], v.hx, c, px, py, pz, n);
             } else {
-              spread_lanes<Monopole, N>(m, d, t, v.hx, dx0, k, px, py, pz, n);
+              spread_lanes<Monopole, N>(m, d, first, v.hx, k, px, py, pz, n);
             }
           });
     }
@@ -349,25 +356,26 @@ template <bool Short, bool Masked, int N>
 
 // Sums of a row of N nodes (N = 0: any length >= 4, given by count) whose first node is table node t.
 template <int N>
-[[gnu::always_inline]] inline void interpolate_row(const double* m, const double* d, double t, double hx, double dx0,
+[[gnu::always_inline]] inline void interpolate_row(const double* m, const double* d, const Lanes& first, double hx,
                                                    const double* ux, const double* uy, const double* uz, int count,
                                                    PlaneSums& s, Lanes (&rd)[3]) {
   const Lanes all{1.0, 1.0, 1.0, 1.0};
   Lanes dx;
   if constexpr (N > 0 && N < 4) {
-    x_offsets(t, hx, dx0, dx);
-    add_chunk<true, false, N>(m, d, dx, ux, uy, uz, all, s, rd);
+    add_chunk<true, false, N>(m, d, first, ux, uy, uz, all, s, rd);
   } else {
     const int n = N > 0 ? N : count;
     int i = 0;
-    for (; i + 4 <= n; i += 4) {
-      x_offsets(t + i, hx, dx0, dx);
+    Lanes step;
+    broadcast(4.0 * hx, step);
+    dx = first;
+    for (; i + 4 <= n; i += 4, dx += step) {
       add_chunk<false, false, 0>(m + i, d + i, dx, ux + i, uy + i, uz + i, all, s, rd);
     }
     if (i < n) {  // the last 4 nodes; lanes before node i were counted above
       const int o = n - 4, old = 4 - (n - i);
       const Lanes keep{old <= 0 ? 1.0 : 0.0, old <= 1 ? 1.0 : 0.0, old <= 2 ? 1.0 : 0.0, 1.0};
-      x_offsets(t + o, hx, dx0, dx);
+      x_offsets_from(first, hx, o, dx);
       add_chunk<false, true, 0>(m + o, d + o, dx, ux + o, uy + o, uz + o, keep, s, rd);
     }
   }
@@ -386,12 +394,13 @@ SUSPEND_SIMD_CLONES void interpolate_particle(const Visit& v, const double* ux, 
     for (const SupportRow* r = v.rows + q->row_begin; r != rows_end; ++r) {
       const double* m = v.tables + r->table;
       const double* d = m + w;
-      const double t = first_table_node(v, *r), dx0 = v.dx0[r->j];
+      Lanes first;
+      x_offsets(v, *r, first);
       const std::size_t o = r->first;
       const int n = r->count;
       Lanes rd[3] = {};
-      with_fixed_length(n, [&](auto len) {
-        interpolate_row<decltype(len)::value>(m, d, t, v.hx, dx0, ux + o, uy + o, uz + o, n, s, rd);
+      with_fixed_length(n, [&](auto len) __attribute__((always_inline)) {
+        interpolate_row<decltype(len)::value>(m, d, first, v.hx, ux + o, uy + o, uz + o, n, s, rd);
       });
       // dy is constant along the row: sum u dy d = dy sum u d.
       Lanes dy;
