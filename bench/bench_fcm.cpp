@@ -127,17 +127,20 @@ BENCHMARK(BM_FcmMobilitySolve)
 // pass of the bare FFTs (3 forward + 3 inverse, FFTW measure plans of their own), each with 1 and with 2 threads
 // (separate solvers and plans per thread count). Counters: solve_over_bare_t1 / _t2 = summed solve time / summed
 // bare FFT time at 1 / 2 threads (target <= 2), solve_speedup_2t = 1-thread / 2-thread solve time (target >= 1.6),
-// bare_speedup_2t the same for the bare FFTs. Args: grid, phi in percent.
+// bare_speedup_2t the same for the bare FFTs. Args: grid, phi in percent, truncation in tenths of a width (0: the
+// default of SolverOptions).
 static void BM_FcmAcceptanceRatios(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const double phi = 0.01 * static_cast<double>(state.range(1));
   const double l = 0.5 * n;
   const Suspension s = random_suspension(l, phi);
+  SolverOptions options;
+  if (state.range(2) > 0) options.truncation_widths = 0.1 * static_cast<double>(state.range(2));
   std::unique_ptr<Solver> solver[2];
   std::unique_ptr<VectorFft> bare[2];
   for (int t = 0; t < 2; ++t) {
     omp_set_num_threads(t + 1);
-    solver[t] = std::make_unique<Solver>(Vec3::Constant(l), std::array<int, 3>{n, n, n});
+    solver[t] = std::make_unique<Solver>(Vec3::Constant(l), std::array<int, 3>{n, n, n}, options);
     bare[t] = std::make_unique<VectorFft>(std::array<int, 3>{n, n, n}, t + 1, FftPlanning::measure);
     omp_set_num_threads(t + 1);
     solver[t]->apply(s.pos, s.rad, s.force, s.torque, s.stresslet, 1.3);  // plan the footprints once
@@ -173,7 +176,12 @@ static void BM_FcmAcceptanceRatios(benchmark::State& state) {
   state.counters["fft_speedup_2t"] = (a.fft / a.solves) / (b.fft / b.solves);
   state.counters["interp_speedup_2t"] = (a.interpolate / a.solves) / (b.interpolate / b.solves);
 }
-BENCHMARK(BM_FcmAcceptanceRatios)->Args({64, 40})->Args({64, 10})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_FcmAcceptanceRatios)
+    ->Args({64, 40, 0})
+    ->Args({64, 10, 0})
+    ->Args({64, 40, 45})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 static void BM_BareFfts(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
