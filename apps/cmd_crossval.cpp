@@ -101,8 +101,13 @@ void add_crossval_command(CLI::App& app) {
       const double a = p["mean"].get<double>(), b = f["mean"].get<double>();
       const double diff = a != 0.0 ? (b - a) / std::abs(a) : NAN;
       result["relative_difference"][key] = diff;
-      std::printf("%-20s %12.5g +- %-9.2g %12.5g +- %-9.2g %+9.1f%%\n", key.c_str(), a, p["sem"].get<double>(), b,
-                  f["sem"].get<double>(), 100.0 * diff);
+      std::printf("%-20s %12.5g +- %-9.2g %12.5g +- %-9.2g ", key.c_str(), a, p["sem"].get<double>(), b,
+                  f["sem"].get<double>());
+      // undefined where the pairwise value is zero (no contact stress in a dilute case): null in the JSON
+      if (std::isfinite(diff))
+        std::printf("%+9.1f%%\n", 100.0 * diff);
+      else
+        std::printf("%10s\n", "n/a");
     }
     std::printf("phi = %.4g; written to %s\n", result["phi"].get<double>(), (dir / "crossval.json").c_str());
     io::write_text_atomically((dir / "crossval.json").string(), result.dump(2) + "\n");
