@@ -33,7 +33,7 @@ struct PairSums {
   StressTensors virial;             // sum over pairs of -sym(d F_j^T), not yet divided by the volume
   double max_overlap = 0.0;         // largest -gap over all pairs
   std::uint32_t max_overlap_i = 0, max_overlap_j = 0;
-  std::size_t contacts = 0;  // pairs with gap < 0
+  std::size_t contacts = 0;  // pairs with a normal contact force (docs/output.md)
   std::size_t offset = 0;    // per-thread scratch of accumulate_pair_forces: force[k] is particle offset + k's
   // Sum over pairs with an elastic contact (PairForce::normal_stiffness > 0) of their compliance length
   // F_n / (dF_n/d delta) (the overlap for linear springs, 2/3 of the compression for Hertz), and their count.
@@ -132,8 +132,10 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
       torque[pr.j - offset] += f.torque_j;
       for (std::size_t c = 0; c < contribution_count; ++c)
         if (f.on_j[c].squaredNorm() > 0.0) virial.part[c] -= sym_outer(pr.geometry.d, f.on_j[c]);
+      // A contact: the contact law exerts a normal force (overlap for the spring laws, a gap below the roughness
+      // height for Hertz + adhesion).
+      if (f.on_j[static_cast<std::size_t>(Contribution::contact_normal)].squaredNorm() > 0.0) ++contacts;
       const double overlap = -pr.geometry.gap();
-      if (overlap > 0.0) ++contacts;
       if (overlap > max_overlap) {
         max_overlap = overlap;
         max_i = pr.i;

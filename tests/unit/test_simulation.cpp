@@ -87,3 +87,24 @@ TEST(Simulation, RunawayOverlapStopsWithTheParticlesNamedAndStateKept) {
   }
   EXPECT_EQ(sim.state().particles.position[1], Vec3(10, 10, 11.5));
 }
+
+TEST(Simulation, ContactsAreThePairsWithANormalContactForce) {
+  // Hertz + adhesion touches through asperities: a pair is in contact below the roughness height h_r, with no
+  // overlap. Pairs (0,1) at gap 0.4 h_r and (2,3) at 0.9 h_r are contacts; (4,5) at 1.5 h_r and the distant
+  // sphere 6 are not; a van der Waals attraction acting at a distance does not make a contact.
+  const Box box(30, 30, 30);
+  HertzAdhesiveParams hp;
+  hp.roughness = 5e-3;
+  hp.kn = 1e6;
+  hp.f_adh = 1.0;
+  SimulationParams params;
+  params.contact = ComposedLaw<HertzAdhesive>{HertzAdhesive(hp), {std::nullopt, VanDerWaals{}}};
+  const double h = hp.roughness;
+  const auto st = state_of({{5, 5, 5}, {7 + 0.4 * h, 5, 5}, {5, 15, 5}, {5, 17.4 + 0.9 * h, 5}, {15, 5, 15},
+                            {15, 5, 17 + 1.5 * h}, {25, 25, 25}},
+                           {1.0, 1.0, 1.0, 1.4, 1.0, 1.0, 1.0});
+  PairwiseSimulation sim(st, box, params);
+  sim.evaluate();
+  EXPECT_EQ(sim.contact_count(), 2u);
+  EXPECT_EQ(sim.max_overlap(), 0.0);
+}
