@@ -15,5 +15,7 @@ struct NumericalError : std::runtime_error {
 
 inline constexpr int exit_input_error = 2;
 inline constexpr int exit_numerical_error = 3;
+// An imposed-stress run whose shear rate stayed below its jammed threshold (RunCase::jammed_*): data, not a failure.
+inline constexpr int exit_jammed = 4;
 inline constexpr int exit_interrupted = 130;
 }  // namespace suspend

@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
+#include <optional>
 
 #include "io/contact_case.hpp"
 #include "io/schema_reader.hpp"
@@ -97,6 +99,7 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   if (!c.box && !c.particles.count)
     throw InputError("particles.count: missing; give particles.count or box (the other follows from phi)");
 
+  std::optional<double> sigma_star;  // flow.sigma_star, resolved into shear_stress once the contact law is known
   {
     SchemaReader f = top.child("flow");
     SimulationParams& s = c.simulation;
@@ -104,10 +107,17 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     s.control = f.choice("control", "rate", {"rate", "stress"}) == "stress" ? FlowControl::stress : FlowControl::rate;
     s.shear_rate = f.number("shear_rate", 1.0, Range::positive());
     if (s.control == FlowControl::stress) {
-      s.shear_stress = f.number("shear_stress", Range::positive());
+      if (f.has("sigma_star") && f.has("shear_stress"))
+        f.fail("sigma_star", "give either shear_stress or sigma_star (adhesive laws), not both");
+      if (f.has("sigma_star"))
+        sigma_star = f.number("sigma_star", Range::positive());
+      else
+        s.shear_stress = f.number("shear_stress", Range::positive());
       if (c.flow == "wavy") f.fail("control", "stress control is available for flow.type = simple_shear only");
-    } else if (f.has("shear_stress")) {
-      f.fail("shear_stress", "is the target of flow.control = stress; with control = rate give shear_rate only");
+    } else {
+      for (const char* key : {"shear_stress", "sigma_star"})
+        if (f.has(key))
+          f.fail(key, "is a target of flow.control = stress; with control = rate give shear_rate only");
     }
     if (c.flow == "wavy") {
       s.wave_amplitude = f.number("amplitude", Range{});
@@ -154,6 +164,14 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     h.finish();
   }
   c.simulation.contact = read_contact(top.child("contact"));
+  if (sigma_star) {
+    // paper 004 eq. 20: sigma* = 6 pi Sigma_12 a_1^2 / F_adh
+    const double f_adh = adhesion_force(c.simulation.contact);
+    if (!(f_adh > 0.0))
+      throw InputError("flow.sigma_star: needs an adhesive contact law (contact.law = hertz_adhesive with g_adh > 0), "
+                       "since sigma* = 6 pi Sigma_12 a_1^2 / F_adh; give flow.shear_stress instead");
+    c.simulation.shear_stress = *sigma_star * f_adh / (6.0 * std::numbers::pi);
+  }
   {
     SchemaReader r = top.child("run");
     c.run.strain = r.number("strain", c.run.strain, Range::positive());
@@ -163,6 +181,12 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
       r.fail("average_from", exact(c.run.average_from) + " must be below run.strain = " + exact(c.run.strain));
     c.run.seed = r.integer("seed", 1, 0, 2'000'000'000);
     c.run.threads = r.integer("threads", 0, 0, 4096);
+    {
+      SchemaReader j = r.child("jammed");
+      c.run.jammed_viscosity = j.number("viscosity", c.run.jammed_viscosity, Range::positive());
+      c.run.jammed_strain = j.number("strain", c.run.jammed_strain, Range::positive());
+      j.finish();
+    }
     c.simulation.max_overlap = r.number("max_overlap", c.simulation.max_overlap, Range::open_closed(0.0, 1.0));
     c.simulation.skin = r.number("skin", c.simulation.skin, Range::positive());
     c.simulation.integrator = r.choice("integrator", "overdamped", {"overdamped", "inertial"}) == "inertial"
@@ -289,6 +313,10 @@ YAML::Node to_yaml(const Case& c) {
   r["average_from"] = number_node(c.run.average_from);
   r["seed"] = c.run.seed;
   r["threads"] = c.run.threads;
+  if (c.simulation.control == FlowControl::stress) {
+    r["jammed"]["viscosity"] = number_node(c.run.jammed_viscosity);
+    r["jammed"]["strain"] = number_node(c.run.jammed_strain);
+  }
   r["max_overlap"] = number_node(c.simulation.max_overlap);
   r["skin"] = number_node(c.simulation.skin);
   r["integrator"] = c.simulation.integrator == Integrator::inertial ? "inertial" : "overdamped";

@@ -67,6 +67,8 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
     h5::set_attribute(id, ".", "next_checkpoint", c.clock.next_checkpoint);
     h5::set_attribute(id, ".", "series_rows", c.clock.series_rows);
     h5::set_attribute(id, ".", "snapshots", c.clock.snapshots);
+    h5::set_attribute(id, ".", "jam_window_time", c.clock.jam_window_time);
+    h5::set_attribute(id, ".", "jam_window_strain", c.clock.jam_window_strain);
     f.flush();
   });
 }
@@ -94,7 +96,12 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     c.clock.next_checkpoint = h5::double_attribute(id, ".", "next_checkpoint");
     c.clock.series_rows = h5::int_attribute(id, ".", "series_rows");
     c.clock.snapshots = h5::int_attribute(id, ".", "snapshots");
-    for (double v : {c.state.time, c.state.strain, c.state.last_dt, c.state.shear_rate, c.clock.next_series, c.clock.next_snapshot, c.clock.next_checkpoint})
+    if (h5::has_attribute(id, ".", "jam_window_time")) {  // absent in checkpoints written before it existed
+      c.clock.jam_window_time = h5::double_attribute(id, ".", "jam_window_time");
+      c.clock.jam_window_strain = h5::double_attribute(id, ".", "jam_window_strain");
+    }
+    for (double v : {c.state.time, c.state.strain, c.state.last_dt, c.state.shear_rate, c.clock.next_series, c.clock.next_snapshot, c.clock.next_checkpoint,
+                     c.clock.jam_window_time, c.clock.jam_window_strain})
       if (!std::isfinite(v)) throw InputError(path + ": time, strain or output clock is not finite");
     Particles& p = c.state.particles;
     p.radius = h5::read_doubles(id, "particles/radius");

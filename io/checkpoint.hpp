@@ -16,6 +16,9 @@ struct OutputClock {
   double next_checkpoint = 0.0;  // strain of the next periodic checkpoint
   std::int64_t series_rows = 0;
   std::int64_t snapshots = 0;
+  // Imposed stress: time and strain at the start of the current jammed-detection window (RunCase::jammed_*).
+  double jam_window_time = 0.0;
+  double jam_window_strain = 0.0;
 };
 
 struct Checkpoint {

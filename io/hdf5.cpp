@@ -176,6 +176,11 @@ double double_attribute(hid_t loc, const std::string& path, const std::string& n
   check_status(H5Aread(a.id(), H5T_NATIVE_DOUBLE, &v), "read attribute " + name);
   return v;
 }
+bool has_attribute(hid_t loc, const std::string& path, const std::string& name) {
+  const htri_t e = H5Aexists_by_name(loc, path.c_str(), name.c_str(), H5P_DEFAULT);
+  check_status(e, "look up attribute " + name);
+  return e > 0;
+}
 std::int64_t int_attribute(hid_t loc, const std::string& path, const std::string& name) {
   Handle a = attribute_for_read(loc, path, name);
   std::int64_t v = 0;

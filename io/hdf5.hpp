@@ -60,6 +60,7 @@ void set_attribute(hid_t loc, const std::string& path, const std::string& name, 
 std::string string_attribute(hid_t loc, const std::string& path, const std::string& name);
 double double_attribute(hid_t loc, const std::string& path, const std::string& name);
 std::int64_t int_attribute(hid_t loc, const std::string& path, const std::string& name);
+bool has_attribute(hid_t loc, const std::string& path, const std::string& name);
 
 // A growable table of doubles: rows of `width` values, appended one at a time.
 class Table {

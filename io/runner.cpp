@@ -5,7 +5,9 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -65,6 +67,7 @@ std::string physics_fingerprint(const Case& c) {
   n["run"].remove("average_from");
   n["run"].remove("threads");
   n["run"].remove("output");
+  n["run"].remove("jammed");  // when to give up, not what is simulated
   n.remove("title");
   if (n["hydrodynamics"]["fcm"]) n["hydrodynamics"]["fcm"].remove("cache_dir");  // where, not what
   YAML::Emitter e;
@@ -141,6 +144,16 @@ int run_case(const Case& c, const RunOptions& o) {
       write_text_atomically(join(dir, "run.xdmf"), xdmf_text("run.h5", file.snapshots()));
     };
 
+    auto write_summary = [&](double average_from, const nlohmann::json& extra) {
+      nlohmann::json summary =
+          summarize(file.id(), {sim.state().particles.volume() / sim.box().volume(), sim.state().particles.size(),
+                                average_from, c.simulation.control == FlowControl::stress,
+                                adhesion_force(c.simulation.contact)});
+      summary.update(extra);
+      write_text_atomically(join(dir, "summary.json"), summary.dump(2) + "\n");
+      return summary;
+    };
+
     auto wall0 = std::chrono::steady_clock::now();
     install_stop_handlers();
     double stress_sum = 0.0, rate_sum = 0.0;  // running eta_r = <Sigma_xy> / <gammadot>
@@ -186,6 +199,35 @@ int run_case(const Case& c, const RunOptions& o) {
                     << c.source << " --restart " << checkpoint_path << "\n";
           return 128 + sig;
         }
+        if (c.simulation.control == FlowControl::stress) {
+          // Jammed below the yield stress: the mean rate over a window stays below Sigma / jammed_viscosity.
+          const double window = c.run.jammed_strain * c.run.jammed_viscosity / c.simulation.shear_stress;
+          const SimulationState& st = sim.state();
+          if (st.time - clock.jam_window_time >= window) {
+            if (st.strain - clock.jam_window_strain < c.run.jammed_strain) {
+              const double rate = (st.strain - clock.jam_window_strain) / (st.time - clock.jam_window_time);
+              file.write_snapshot(snapshot_of(sim));
+              save();
+              finish_outputs();
+              progress.finish();
+              const double from = std::min(c.run.average_from, 0.5 * st.strain);
+              write_summary(from, {{"status", "jammed"},
+                                   {"jammed", {{"mean_shear_rate", rate},
+                                               {"over_time", st.time - clock.jam_window_time},
+                                               {"threshold", c.simulation.shear_stress / c.run.jammed_viscosity}}}});
+              std::fprintf(stderr,
+                           "jammed: the mean shear rate was %.3g over the last %.4g time units (threshold "
+                           "Sigma/run.jammed.viscosity = %.3g) at strain %.4g; summary.json averages from strain "
+                           "%.4g\n",
+                           rate, st.time - clock.jam_window_time, c.simulation.shear_stress / c.run.jammed_viscosity,
+                           st.strain, from);
+              file.close();
+              return exit_jammed;
+            }
+            clock.jam_window_time = st.time;
+            clock.jam_window_strain = st.strain;
+          }
+        }
         if (sim.state().strain >= clock.next_checkpoint - eps || wall >= every.checkpoint_seconds) {
           clock.next_checkpoint = next_multiple(sim.state().strain, every.checkpoint_every);
           save();
@@ -204,11 +246,7 @@ int run_case(const Case& c, const RunOptions& o) {
     progress.finish();
     save();
     finish_outputs();
-    const nlohmann::json summary =
-        summarize(file.id(), {sim.state().particles.volume() / sim.box().volume(), sim.state().particles.size(),
-                              c.run.average_from, c.simulation.control == FlowControl::stress,
-                              adhesion_force(c.simulation.contact)});
-    write_text_atomically(join(dir, "summary.json"), summary.dump(2) + "\n");
+    const nlohmann::json summary = write_summary(c.run.average_from, {{"status", "done"}});
     file.close();
     const auto& eta = summary["eta_r"];
     if (summary.contains("sigma_star"))

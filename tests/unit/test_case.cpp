@@ -231,3 +231,30 @@ TEST(Case, FlowControlWaveIntegratorAndModelKeys) {
   EXPECT_NE(error_of(std::string(base) + "hydrodynamics: {model: fcm, fcm: {grid_spacng: 1}}\n")
                 .find("hydrodynamics.fcm.grid_spacng"), std::string::npos);
 }
+
+TEST(Case, SigmaStarSetsTheImposedStressFromTheAdhesionForce) {
+  // Paper 004 eq. 20: sigma* = 6 pi Sigma_12 a_1^2 / F_adh and F_adh = 6 pi G_adh (eta_0 gammadot_ref a_1^2 units),
+  // so Sigma_12 = sigma* G_adh.
+  YAML::Node root = YAML::Load(base);
+  apply_override(root, "contact={law: hertz_adhesive, g_adh: 2.5, gamma_bar: 0.36}");
+  apply_override(root, "flow={control: stress, sigma_star: 0.7}");
+  const Case c = parse_case(root, "");
+  EXPECT_NEAR(c.simulation.shear_stress, 0.7 * 2.5, 1e-12);
+  EXPECT_EQ(to_yaml_text(parse_case(to_yaml(c), "")), to_yaml_text(c));
+  EXPECT_NE(error_of(base, {"flow={control: stress, sigma_star: 1}"}).find("flow.sigma_star: needs an adhesive"),
+            std::string::npos);
+  EXPECT_NE(error_of(base, {"flow={control: stress, sigma_star: 1, shear_stress: 1}"}).find("not both"),
+            std::string::npos);
+  EXPECT_NE(error_of(base, {"flow={sigma_star: 1}"}).find("flow.sigma_star: is a target of flow.control = stress"),
+            std::string::npos);
+}
+
+TEST(Case, JammedThresholdsAreReadAndPrintedUnderImposedStress) {
+  YAML::Node root = YAML::Load(std::string(base) + "flow: {control: stress, shear_stress: 5}\n");
+  apply_override(root, "run.jammed={viscosity: 500, strain: 0.1}");
+  const Case c = parse_case(root, "");
+  EXPECT_DOUBLE_EQ(c.run.jammed_viscosity, 500.0);
+  EXPECT_DOUBLE_EQ(c.run.jammed_strain, 0.1);
+  EXPECT_DOUBLE_EQ(to_yaml(c)["run"]["jammed"]["viscosity"].as<double>(), 500.0);
+  EXPECT_NE(error_of(base, {"run.jammed.viscosity=0"}).find("run.jammed.viscosity"), std::string::npos);
+}
