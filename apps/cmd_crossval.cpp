@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case.hpp"
+#include "io/derived_rheology.hpp"
 #include "io/runner.hpp"
 
 namespace suspend::app {
@@ -21,33 +22,12 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
-json mean_sem(double mean, double sem) { return {{"mean", mean}, {"sem", sem}}; }
-
-// The table's observables from one summary.json. Sigma^c: every non-hydrodynamic contribution (contacts, surface
-// forces, adhesion). Sigma_22 of a part follows from its N1, N2 and Pi: yy = -Pi - (N1 - N2)/3.
-json observables(const json& s) {
+// The table's rows, from one summary.json.
+json observables(const json& summary) {
+  const json all = io::derived_rheology(summary);
   json o;
-  auto m = [](const json& e) { return e["mean"].get<double>(); };
-  auto e = [](const json& x) { return x["sem"].get<double>(); };
-  const double eta = m(s["eta_r"]), eta_sem = e(s["eta_r"]);
-  double c12 = 0, c12_sem2 = 0, c22 = 0, c22_sem2 = 0;
-  for (const char* part : {"contact_normal", "contact_tangential", "repulsion", "adhesion"}) {
-    const json& p = s["contributions"][part];
-    c12 += m(p["eta_r"]);
-    c12_sem2 += e(p["eta_r"]) * e(p["eta_r"]);
-    c22 += -m(p["Pi"]) - (m(p["N1"]) - m(p["N2"])) / 3.0;
-    c22_sem2 += e(p["Pi"]) * e(p["Pi"]) + (e(p["N1"]) * e(p["N1"]) + e(p["N2"]) * e(p["N2"])) / 9.0;
-  }
-  auto ratio = [&](double num, double num_sem2) {
-    return mean_sem(num / eta, std::hypot(std::sqrt(num_sem2) / eta, num * eta_sem / (eta * eta)));
-  };
-  o["eta_r"] = s["eta_r"];
-  o["Sigma_c12/Sigma_12"] = ratio(c12, c12_sem2);
-  o["Sigma_c22/Sigma_12"] = ratio(c22, c22_sem2);
-  o["N1"] = s["N1"];
-  o["N2"] = s["N2"];
-  o["Pi"] = s["Pi"];
-  if (s.contains("sigma_star")) o["sigma_star"] = s["sigma_star"];
+  for (const char* key : {"eta_r", "Sigma_c12/Sigma_12", "Sigma_c22/Sigma_12", "N1", "N2", "Pi", "sigma_star"})
+    if (all.contains(key)) o[key] = all[key];
   return o;
 }
 }  // namespace
