@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string>
 
 namespace suspend::io {
 
@@ -21,7 +22,8 @@ void sync_file(const std::string& path) {
 }  // namespace
 
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
-  const std::string tmp = path + ".tmp";
+  // The process id keeps processes that write the same file at once (sweep ranks, scheduler jobs) apart.
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
   try {
     write(tmp);
     sync_file(tmp);

@@ -117,7 +117,7 @@ TEST(Checkpoint, RoundTripIsBitExact) {
   c.rng = "123 456";
   c.threads = 2;
   write_checkpoint(path, c);
-  EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+  EXPECT_FALSE(std::filesystem::exists(path + ".tmp." + std::to_string(getpid())));
   const Checkpoint d = read_checkpoint(path, "physics");
   EXPECT_EQ(d.state.step, 12345);
   EXPECT_EQ(d.state.strain, c.state.strain);
