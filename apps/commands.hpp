@@ -11,4 +11,8 @@ void add_pair_command(CLI::App& app);
 void add_mobility_command(CLI::App& app);
 // `suspend crossval`: one case with both hydrodynamic models, side by side (apps/cmd_crossval.cpp).
 void add_crossval_command(CLI::App& app);
+// `suspend sweep`: the points of a campaign, resumable (apps/cmd_sweep.cpp).
+void add_sweep_command(CLI::App& app);
+// `suspend phim`: Maron-Pierce fits of phi_m(sigma*) to a campaign table (apps/cmd_phim.cpp).
+void add_phim_command(CLI::App& app);
 }  // namespace suspend::app

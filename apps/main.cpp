@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   suspend::app::add_run_command(app);
   suspend::app::add_crossval_command(app);
+  suspend::app::add_sweep_command(app);
+  suspend::app::add_phim_command(app);
   suspend::app::add_check_command(app);
   suspend::app::add_pair_command(app);
   suspend::app::add_mobility_command(app);

@@ -9,6 +9,8 @@ find_package(HDF5 REQUIRED COMPONENTS C)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
 find_library(FFTW3_THREADS_LIBRARY NAMES fftw3_threads REQUIRED)
+# MPI (OpenMPI from Debian) lets `mpirun -n K suspend sweep` hand campaign points to ranks; optional.
+find_package(MPI COMPONENTS C)
 if(SUSPEND_BENCH)
   find_package(benchmark REQUIRED)
 endif()

@@ -19,13 +19,14 @@
 
 #include "io/hdf5.hpp"
 #include "io/run_file.hpp"
+#include "tests/integration/cli_support.hpp"
 
 extern char** environ;
 namespace fs = std::filesystem;
 using namespace suspend::io;
+using namespace suspend::test;
 
 namespace {
-const std::string suspend_bin = SUSPEND_BINARY_DIR "/bin/suspend";
 const std::string restart_case = SUSPEND_SOURCE_DIR "/tests/data/restart_case.yaml";
 #ifdef NDEBUG
 const std::vector<std::string> lighter;  // Release: the case as written
@@ -40,63 +41,6 @@ std::vector<std::string> with_lighter(std::vector<std::string> args) {
   return args;
 }
 
-// Per-process scratch space: several builds (Release, sanitizers) may run this test at the same time.
-std::string scratch() {
-  const std::string d = ::testing::TempDir() + "/suspend_cli_" + std::to_string(getpid());
-  fs::create_directories(d);
-  return d;
-}
-pid_t spawn(std::vector<std::string> args, const std::string& err_file) {
-  args.insert(args.begin(), suspend_bin);
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-  pid_t pid = -1;
-  EXPECT_EQ(posix_spawn(&pid, suspend_bin.c_str(), &fa, nullptr, argv.data(), environ), 0);
-  posix_spawn_file_actions_destroy(&fa);
-  return pid;
-}
-int wait_exit(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-struct Result {
-  int code;
-  std::string err;
-};
-Result run(const std::vector<std::string>& args) {
-  const std::string err_file = scratch() + "/stderr.txt";
-  const int code = wait_exit(spawn(args, err_file));
-  std::ifstream in(err_file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return {code, s.str()};
-}
-std::string fresh_dir(const std::string& name) {
-  const std::string d = scratch() + "/" + name;
-  fs::remove_all(d);
-  return d;
-}
-std::string write_case(const std::string& name, const std::string& text) {
-  const std::string p = scratch() + "/" + name;
-  std::ofstream(p) << text;
-  return p;
-}
-void expect_input_error(const std::vector<std::string>& args, const std::string& fragment, const std::string& out) {
-  const Result r = run(args);
-  EXPECT_EQ(r.code, 2) << r.err;
-  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
-  EXPECT_NE(r.err.find(fragment), std::string::npos) << r.err;
-  if (!out.empty()) {
-    EXPECT_FALSE(fs::exists(out)) << "nothing may be written to --out on bad input";
-  }
-}
 }  // namespace
 
 TEST(Cli, VersionAndHelp) {

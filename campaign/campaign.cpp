@@ -1,0 +1,175 @@
+#include "campaign/campaign.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "core/error.hpp"
+#include "io/case.hpp"
+#include "io/schema_reader.hpp"
+
+namespace suspend::campaign {
+
+namespace {
+namespace fs = std::filesystem;
+
+std::string yaml_text(const YAML::Node& n) {
+  if (n.IsScalar()) return n.Scalar();
+  YAML::Emitter e;
+  e << YAML::Flow << n;
+  return e.c_str();
+}
+
+std::string key_of(const YAML::Node& k, const std::string& where) {
+  if (!k.IsScalar() || k.Scalar().empty()) throw InputError(where + ": keys must be dotted case keys (e.g. particles.phi)");
+  const std::string key = k.Scalar();
+  if (key.front() == '.' || key.back() == '.' || key.find("..") != std::string::npos || key.find('=') != std::string::npos)
+    throw InputError(where + ": '" + key + "' is not a dotted case key (e.g. particles.phi)");
+  return key;
+}
+
+std::vector<Assignment> assignments(const YAML::Node& map, const std::string& where) {
+  if (!map.IsMap()) throw InputError(where + ": must be a mapping of dotted case keys to values");
+  std::vector<Assignment> out;
+  std::set<std::string> seen;
+  for (const auto& kv : map) {
+    const std::string key = key_of(kv.first, where);
+    if (!seen.insert(key).second) throw InputError(where + "." + key + ": given twice");
+    if (kv.second.IsNull()) throw InputError(where + "." + key + ": has no value");
+    out.push_back({key, yaml_text(kv.second)});
+  }
+  return out;
+}
+
+// A point's name: each parameter as its last key component and its value (the full key where two varied keys
+// share a last component), joined by '_'; characters that do not belong in a folder name become '_'.
+std::string point_name(const std::vector<Assignment>& parameters, const std::vector<std::string>& varied_keys) {
+  auto last = [](const std::string& k) { return k.substr(k.rfind('.') + 1); };
+  std::string name;
+  for (const Assignment& a : parameters) {
+    int sharing = 0;
+    for (const std::string& k : varied_keys) sharing += last(k) == last(a.key);
+    std::string part = sharing > 1 ? a.key : last(a.key);
+    for (char& ch : part)
+      if (ch == '.') ch = '_';
+    for (char ch : a.value) part += std::isalnum(static_cast<unsigned char>(ch)) || ch == '.' || ch == '-' || ch == '+' ? ch : '_';
+    name += (name.empty() ? "" : "_") + part;
+  }
+  return name.empty() ? "base" : name;
+}
+
+// The points of one `vary` mapping: the product of its lists, first key outermost.
+void append_product(const YAML::Node& vary, const std::string& where, std::vector<std::vector<Assignment>>& out) {
+  if (!vary.IsMap() || vary.size() == 0)
+    throw InputError(where + ": must be a mapping of dotted case keys to lists of values, e.g. particles.phi: [0.4, 0.45]");
+  std::vector<std::vector<Assignment>> product = {{}};
+  for (const auto& kv : vary) {
+    const std::string key = key_of(kv.first, where);
+    if (!kv.second.IsSequence() || kv.second.size() == 0)
+      throw InputError(where + "." + key + ": must be a non-empty list of values, e.g. [0.40, 0.45]");
+    std::vector<std::vector<Assignment>> next;
+    for (const auto& partial : product)
+      for (const auto& v : kv.second) {
+        next.push_back(partial);
+        next.back().push_back({key, yaml_text(v)});
+      }
+    product = std::move(next);
+  }
+  out.insert(out.end(), product.begin(), product.end());
+}
+
+std::string identity_of(const io::Case& c) {
+  YAML::Node n = io::to_yaml(c);
+  n["run"].remove("threads");  // the sweep sets the thread count
+  if (n["hydrodynamics"]["fcm"]) n["hydrodynamics"]["fcm"].remove("cache_dir");  // where, not what
+  YAML::Emitter e;
+  e << n;
+  return e.c_str();
+}
+}  // namespace
+
+std::vector<std::string> Campaign::overrides(const Point& p) const {
+  std::vector<std::string> out;
+  for (const Assignment& a : set) out.push_back(a.key + "=" + a.value);
+  for (const Assignment& a : p.parameters) out.push_back(a.key + "=" + a.value);
+  return out;
+}
+
+const Point* Campaign::find(const std::string& name) const {
+  for (const Point& p : points)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+Campaign load_campaign(const std::string& path) {
+  if (!fs::is_regular_file(path)) throw InputError(path + ": campaign file not found");
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path + ": not valid YAML at line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+  }
+  if (!root.IsMap()) throw InputError(path + ": a campaign file is a mapping with keys case, set, vary, points");
+  const std::vector<std::string> allowed = {"case", "set", "vary", "points"};
+  for (const auto& kv : root) {
+    const std::string k = kv.first.Scalar();
+    if (std::find(allowed.begin(), allowed.end(), k) == allowed.end()) {
+      const std::string near = io::closest_word(k, allowed);
+      throw InputError(k + ": unknown campaign key" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+                       "; allowed: case, set, vary, points");
+    }
+  }
+  Campaign c;
+  c.source = path;
+  if (!root["case"] || !root["case"].IsScalar() || root["case"].Scalar().empty())
+    throw InputError("case: missing; name the base case file (relative to the campaign file)");
+  fs::path case_file(root["case"].Scalar());
+  if (case_file.is_relative()) case_file = fs::path(path).parent_path() / case_file;
+  c.case_file = case_file.lexically_normal().string();
+  if (!fs::is_regular_file(c.case_file)) throw InputError("case: '" + c.case_file + "' does not exist or is not a file");
+  if (root["set"]) c.set = assignments(root["set"], "set");
+
+  std::vector<std::vector<Assignment>> parameter_sets;
+  if (root["vary"]) {  // one mapping of lists (their product), or a list of such mappings (the union of products)
+    const YAML::Node vary = root["vary"];
+    if (vary.IsMap()) {
+      append_product(vary, "vary", parameter_sets);
+    } else if (vary.IsSequence()) {
+      for (std::size_t i = 0; i < vary.size(); ++i)
+        append_product(vary[i], "vary[" + std::to_string(i) + "]", parameter_sets);
+    } else {
+      throw InputError("vary: must be a mapping of dotted case keys to lists of values, or a list of such mappings");
+    }
+  }
+  if (root["points"]) {
+    const YAML::Node points = root["points"];
+    if (!points.IsSequence()) throw InputError("points: must be a list of mappings of dotted case keys to values");
+    for (std::size_t i = 0; i < points.size(); ++i)
+      parameter_sets.push_back(assignments(points[i], "points[" + std::to_string(i) + "]"));
+  }
+  if (parameter_sets.empty()) parameter_sets.push_back({});
+
+  for (const auto& ps : parameter_sets)
+    for (const Assignment& a : ps)
+      if (std::find(c.varied_keys.begin(), c.varied_keys.end(), a.key) == c.varied_keys.end())
+        c.varied_keys.push_back(a.key);
+  std::map<std::string, std::size_t> names;
+  for (const auto& ps : parameter_sets) {
+    Point p{point_name(ps, c.varied_keys), ps, ""};
+    if (!names.emplace(p.name, c.points.size()).second)
+      throw InputError("points: two points are both named '" + p.name + "' (the same parameters given twice)");
+    try {
+      p.identity = identity_of(io::load_case(c.case_file, c.overrides(p)));
+    } catch (const InputError& e) {
+      throw InputError("point " + p.name + ": " + e.what());
+    }
+    c.points.push_back(std::move(p));
+  }
+  return c;
+}
+
+}  // namespace suspend::campaign

@@ -1,0 +1,103 @@
+#include "campaign/maron_pierce.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+namespace suspend::campaign {
+
+namespace {
+struct Best {
+  double phi_m = 0.0, alpha = 0.0, chi2 = 0.0;
+  bool bracketed = true;
+};
+
+// chi^2 at phi_m with the optimal alpha = sum(eta f / s^2) / sum(f^2 / s^2), f = (1 - phi/phi_m)^-2.
+double profile(const std::vector<ViscosityPoint>& p, double phi_m, double* alpha) {
+  double ef = 0.0, ff = 0.0;
+  for (const ViscosityPoint& q : p) {
+    const double f = maron_pierce(q.phi, 1.0, phi_m), w = 1.0 / (q.sem * q.sem);
+    ef += q.eta * f * w;
+    ff += f * f * w;
+  }
+  const double a = ef / ff;
+  double chi2 = 0.0;
+  for (const ViscosityPoint& q : p) {
+    const double r = (q.eta - a * maron_pierce(q.phi, 1.0, phi_m)) / q.sem;
+    chi2 += r * r;
+  }
+  if (alpha) *alpha = a;
+  return chi2;
+}
+
+Best best_fit(const std::vector<ViscosityPoint>& p) {
+  double phi_max = 0.0;
+  for (const ViscosityPoint& q : p) phi_max = std::max(phi_max, q.phi);
+  // phi_m = phi_max + exp(t), from 1e-5 above the densest point up to phi_m = 1.
+  const double t_lo = std::log(1e-5), t_hi = std::log(1.0 - phi_max);
+  const int n = 400;
+  auto at = [&](double t) { return profile(p, phi_max + std::exp(t), nullptr); };
+  int k_best = 0;
+  double c_best = at(t_lo);
+  for (int k = 1; k <= n; ++k) {
+    const double c = at(t_lo + (t_hi - t_lo) * k / n);
+    if (c < c_best) c_best = c, k_best = k;
+  }
+  double a = t_lo + (t_hi - t_lo) * std::max(0, k_best - 1) / n, b = t_lo + (t_hi - t_lo) * std::min(n, k_best + 1) / n;
+  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+  for (int it = 0; it < 100; ++it) {
+    const double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    if (at(x1) < at(x2)) b = x2;
+    else a = x1;
+  }
+  Best r;
+  r.phi_m = phi_max + std::exp(0.5 * (a + b));
+  r.chi2 = profile(p, r.phi_m, &r.alpha);
+  r.bracketed = k_best < n;
+  return r;
+}
+
+// A standard normal variate from the project's generator (Box-Muller on 53-bit uniforms: the same on every platform).
+double normal(std::mt19937_64& rng) {
+  auto uniform = [&] { return (static_cast<double>(rng() >> 11) + 0.5) * 0x1.0p-53; };
+  const double u = uniform(), v = uniform();
+  return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * std::numbers::pi * v);
+}
+}  // namespace
+
+std::optional<MaronPierceFit> fit_maron_pierce(const std::vector<ViscosityPoint>& points, std::string* why,
+                                               int resamples, std::uint64_t seed) {
+  auto fail = [&](const std::string& reason) -> std::optional<MaronPierceFit> {
+    if (why) *why = reason;
+    return std::nullopt;
+  };
+  if (points.size() < 3) return fail(std::to_string(points.size()) + " flowing point(s); a fit needs at least 3");
+  for (const ViscosityPoint& q : points) {
+    if (!(q.sem > 0.0) || !std::isfinite(q.eta) || !(q.phi > 0.0) || !(q.phi < 1.0))
+      return fail("a point has no positive standard error or no finite viscosity (phi = " + std::to_string(q.phi) + ")");
+  }
+  const Best b = best_fit(points);
+  MaronPierceFit f;
+  f.points = static_cast<int>(points.size());
+  f.phi_m = b.phi_m;
+  f.alpha = b.alpha;
+  f.bracketed = b.bracketed;
+  f.chi2_reduced = points.size() > 2 ? b.chi2 / static_cast<double>(points.size() - 2) : 0.0;
+  const double inflate = std::sqrt(std::max(1.0, f.chi2_reduced));
+  std::mt19937_64 rng(seed);
+  double sp = 0, spp = 0, sa = 0, saa = 0;
+  std::vector<ViscosityPoint> draw = points;
+  for (int r = 0; r < resamples; ++r) {
+    for (std::size_t i = 0; i < points.size(); ++i)
+      draw[i].eta = points[i].eta + inflate * points[i].sem * normal(rng);
+    const Best d = best_fit(draw);
+    sp += d.phi_m, spp += d.phi_m * d.phi_m, sa += d.alpha, saa += d.alpha * d.alpha;
+  }
+  const double n = resamples;
+  f.phi_m_err = std::sqrt(std::max(0.0, spp / n - (sp / n) * (sp / n)));
+  f.alpha_err = std::sqrt(std::max(0.0, saa / n - (sa / n) * (sa / n)));
+  return f;
+}
+
+}  // namespace suspend::campaign

@@ -1,0 +1,150 @@
+#include "campaign/phim.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+#include "campaign/maron_pierce.hpp"
+
+namespace suspend::campaign {
+
+using json = nlohmann::ordered_json;
+
+namespace {
+constexpr double infinite = std::numeric_limits<double>::infinity();
+
+double number(const json& v) { return v.is_number() ? v.get<double>() : std::nan(""); }
+
+// sigma* to 6 significant digits, so that 2 and 2.0000000001 are one group.
+double group_value(double s) {
+  if (!std::isfinite(s)) return s;
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", s);
+  return std::strtod(b, nullptr);
+}
+
+struct Group {
+  std::vector<ViscosityPoint> points;
+  std::vector<std::pair<std::string, double>> jammed;  // name, phi
+};
+using Key = std::tuple<std::string, double, double>;  // model, mu_s, sigma*
+
+// Rate-controlled adhesive points at one phi, interpolated at each target sigma* inside their range.
+void interpolate(std::vector<std::tuple<double, double, double, double>> seq, const PhimOptions& o,
+                 const std::string& model, double mu_s, std::map<Key, Group>& groups) {
+  // seq: (sigma*, phi, eta, sem), sorted by sigma*
+  std::sort(seq.begin(), seq.end());
+  for (double target : o.sigma_stars)
+    for (std::size_t k = 0; k + 1 < seq.size(); ++k) {
+      const auto& [s0, p0, e0, d0] = seq[k];
+      const auto& [s1, p1, e1, d1] = seq[k + 1];
+      if (!(s0 <= target && target <= s1) || s0 == s1) continue;
+      const double w = (std::log(target) - std::log(s0)) / (std::log(s1) - std::log(s0));
+      const double eta = std::exp((1 - w) * std::log(e0) + w * std::log(e1));
+      const double rel = (1 - w) * d0 / e0 + w * d1 / e1;
+      groups[{model, mu_s, group_value(target)}].points.push_back({(1 - w) * p0 + w * p1, eta, rel * eta});
+      break;
+    }
+}
+}  // namespace
+
+json fit_phim(const json& table, const PhimOptions& o) {
+  std::map<Key, Group> groups;
+  std::map<std::tuple<std::string, double, double>, std::vector<std::tuple<double, double, double, double>>> sequences;
+  for (const json& e : table["points"]) {
+    const json& c = e["case"];
+    const std::string model = c["model"].get<std::string>();
+    const double mu_s = c["mu_s"].get<double>(), g_adh = c["g_adh"].get<double>();
+    const bool stress = c["control"] == "stress";
+    const std::string status = e["status"].get<std::string>();
+    if (status == "jammed") {
+      const double s = g_adh > 0 && stress ? group_value(c["shear_stress"].get<double>() / g_adh) : infinite;
+      if (stress || g_adh == 0) groups[{model, mu_s, s}].jammed.emplace_back(e["name"], c["phi"].get<double>());
+      continue;
+    }
+    if (status != "done" || e["summary"].is_null()) continue;
+    const double phi = number(e["summary"]["phi"]);
+    if (phi < o.min_phi) continue;
+    const double eta = number(e["summary"]["eta_r"]["mean"]), sem = number(e["summary"]["eta_r"]["sem"]);
+    if (g_adh == 0.0) {
+      groups[{model, mu_s, infinite}].points.push_back({phi, eta, sem});
+    } else if (stress) {
+      groups[{model, mu_s, group_value(c["shear_stress"].get<double>() / g_adh)}].points.push_back({phi, eta, sem});
+    } else {
+      sequences[{model, mu_s, c["phi"].get<double>()}].emplace_back(number(e["summary"]["sigma_star"]["mean"]), phi,
+                                                                    eta, sem);
+    }
+  }
+  for (const auto& [key, seq] : sequences) interpolate(seq, o, std::get<0>(key), std::get<1>(key), groups);
+
+  json fits = json::array();
+  for (auto& [key, g] : groups) {
+    const auto& [model, mu_s, sigma_star] = key;
+    std::sort(g.points.begin(), g.points.end(), [](const auto& a, const auto& b) { return a.phi < b.phi; });
+    json f;
+    f["model"] = model;
+    f["mu_s"] = mu_s;
+    f["sigma_star"] = std::isfinite(sigma_star) ? json(sigma_star) : json();
+    std::string why;
+    const auto fit = fit_maron_pierce(g.points, &why, o.resamples);
+    f["points"] = g.points.size();
+    if (fit) {
+      f["phi_m"] = fit->phi_m;
+      f["phi_m_err"] = fit->phi_m_err;
+      f["alpha"] = fit->alpha;
+      f["alpha_err"] = fit->alpha_err;
+      f["chi2_reduced"] = fit->chi2_reduced;
+      f["bracketed"] = fit->bracketed;
+      json below = json::array();
+      for (const auto& [name, phi] : g.jammed)
+        if (phi < fit->phi_m) below.push_back(name);
+      f["jammed_below_phi_m"] = below;
+      if (!below.empty()) f["note"] = "jammed point(s) below the fitted phi_m";
+      if (!fit->bracketed) f["note"] = "chi^2 still falls at phi_m = 1: the data do not pin the divergence";
+    } else {
+      f["phi_m"] = nullptr;
+      f["note"] = why;
+    }
+    json jammed = json::array();
+    for (const auto& [name, phi] : g.jammed) jammed.push_back(phi);
+    f["jammed_phi"] = jammed;
+    json data = json::array();
+    for (const ViscosityPoint& p : g.points) data.push_back({p.phi, p.eta, p.sem});
+    f["data"] = data;
+    fits.push_back(f);
+  }
+  return {{"min_phi", o.min_phi}, {"fits", fits}};
+}
+
+std::string phim_csv(const json& result) {
+  std::ostringstream out;
+  out << "model,mu_s,sigma_star,phi_m,phi_m_err,alpha,alpha_err,points,chi2_reduced,note\n";
+  auto cell = [&](const json& v) {
+    if (v.is_number()) {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.6g", v.get<double>());
+      out << b;
+    } else if (v.is_string()) {
+      out << '"' << v.get<std::string>() << '"';
+    }
+  };
+  for (const json& f : result["fits"]) {
+    out << f["model"].get<std::string>() << ',';
+    cell(f["mu_s"]);
+    out << ',';
+    if (f["sigma_star"].is_null()) out << "inf";
+    else cell(f["sigma_star"]);
+    for (const char* k : {"phi_m", "phi_m_err", "alpha", "alpha_err", "points", "chi2_reduced", "note"}) {
+      out << ',';
+      if (f.contains(k)) cell(f[k]);
+    }
+    out << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace suspend::campaign

@@ -1,0 +1,53 @@
+#include "campaign/point_record.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "io/atomic_file.hpp"
+
+namespace suspend::campaign {
+
+namespace fs = std::filesystem;
+
+PointRecord read_record(const fs::path& point_dir) {
+  PointRecord r;
+  std::ifstream in(point_dir / "point.json");
+  if (!in) return r;
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) return r;  // written atomically, so only a hand edit gets here
+  r.status = j.value("status", r.status);
+  r.exit_code = j.value("exit_code", r.exit_code);
+  r.message = j.value("message", r.message);
+  r.wall_seconds = j.value("wall_seconds", r.wall_seconds);
+  r.runs = j.value("runs", r.runs);
+  return r;
+}
+
+void write_record(const fs::path& point_dir, const PointRecord& r) {
+  const nlohmann::ordered_json j = {{"status", r.status},   {"exit_code", r.exit_code}, {"message", r.message},
+                                    {"wall_seconds", r.wall_seconds}, {"runs", r.runs}};
+  io::write_text_atomically((point_dir / "point.json").string(), j.dump(2) + "\n");
+}
+
+PointLock::PointLock(const fs::path& point_dir) {
+  fd_ = ::open((point_dir / ".lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+  if (fd_ >= 0 && ::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    fd_ = -1;
+  }
+}
+
+PointLock::~PointLock() {
+  if (fd_ >= 0) ::close(fd_);  // closing the last descriptor releases the flock
+}
+
+bool locked_elsewhere(const fs::path& point_dir) {
+  if (!fs::exists(point_dir / ".lock")) return false;
+  return !PointLock(point_dir).held();
+}
+
+}  // namespace suspend::campaign

@@ -1,0 +1,47 @@
+// The sweep's own record of one point, DIR/points/NAME/point.json: its status and how it ended. The run's files
+// (run.h5, checkpoint.h5, summary.json) sit beside it, as `suspend run` writes them.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <utility>
+
+namespace suspend::campaign {
+
+// done: ran to run.strain; jammed: an imposed-stress run that stopped flowing (its summary averages what it did);
+// failed: numerical failure, bad input, wall-clock budget or a kill (continued with --retry-failed);
+// running: a sweep process holds it now; pending: not started, or interrupted (continued from its checkpoint).
+struct PointRecord {
+  std::string status = "pending";
+  int exit_code = -1;  // of the last run; -1 when none ended yet
+  std::string message;  // why it failed or jammed, from the run's last error line
+  double wall_seconds = 0.0;  // summed over every run of the point
+  int runs = 0;               // times it was started (1 + restarts)
+};
+
+PointRecord read_record(const std::filesystem::path& point_dir);
+void write_record(const std::filesystem::path& point_dir, const PointRecord& r);
+
+// An exclusive lock on a point, held while a process runs it (flock on DIR/points/NAME/.lock, released when the
+// process dies, even by SIGKILL). A sweep skips points locked by another process.
+class PointLock {
+ public:
+  explicit PointLock(const std::filesystem::path& point_dir);  // tries once, never waits
+  ~PointLock();
+  PointLock(const PointLock&) = delete;
+  PointLock& operator=(const PointLock&) = delete;
+  PointLock(PointLock&& o) noexcept : fd_(o.fd_) { o.fd_ = -1; }
+  PointLock& operator=(PointLock&& o) noexcept {
+    std::swap(fd_, o.fd_);
+    return *this;
+  }
+  bool held() const { return fd_ >= 0; }
+  int fd() const { return fd_; }
+
+ private:
+  int fd_ = -1;
+};
+
+// Whether another process holds the point's lock now.
+bool locked_elsewhere(const std::filesystem::path& point_dir);
+
+}  // namespace suspend::campaign

@@ -1,0 +1,287 @@
+#include "campaign/sweep.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <deque>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "campaign/point_record.hpp"
+#include "campaign/table.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+
+namespace suspend::campaign {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+std::atomic<int> stop_signal{0};
+extern "C" void on_sweep_signal(int sig) { stop_signal.store(sig); }
+
+// Every scalar of a YAML tree by dotted key, to name what changed between two resolved cases.
+void flatten(const YAML::Node& n, const std::string& prefix, std::map<std::string, std::string>& out) {
+  if (n.IsMap()) {
+    for (const auto& kv : n) flatten(kv.second, prefix.empty() ? kv.first.Scalar() : prefix + "." + kv.first.Scalar(), out);
+  } else if (n.IsSequence()) {
+    for (std::size_t i = 0; i < n.size(); ++i) flatten(n[i], prefix + "[" + std::to_string(i) + "]", out);
+  } else {
+    out[prefix] = n.IsScalar() ? n.Scalar() : "~";
+  }
+}
+
+std::string differences(const std::string& old_case, const std::string& new_case) {
+  std::map<std::string, std::string> a, b;
+  flatten(YAML::Load(old_case), "", a);
+  flatten(YAML::Load(new_case), "", b);
+  std::string out;
+  int shown = 0;
+  auto show = [&](const std::string& k, const std::string& from, const std::string& to) {
+    if (shown++ < 4) out += (out.empty() ? "" : ", ") + k + " " + from + " -> " + to;
+  };
+  for (const auto& [k, v] : a) {
+    auto it = b.find(k);
+    if (it == b.end()) show(k, v, "(absent)");
+    else if (it->second != v) show(k, v, it->second);
+  }
+  for (const auto& [k, v] : b)
+    if (!a.count(k)) show(k, "(absent)", v);
+  if (shown > 4) out += " and " + std::to_string(shown - 4) + " more";
+  return out;
+}
+
+std::string now_text() {
+  const std::time_t t = std::time(nullptr);
+  char b[16];
+  std::strftime(b, sizeof b, "%H:%M:%S", std::localtime(&t));
+  return b;
+}
+
+// The last line of a point's log that starts with "error:" or "jammed:", for the table.
+std::string last_reason(const fs::path& log) {
+  std::ifstream in(log);
+  std::string line, reason;
+  while (std::getline(in, line))
+    if (line.rfind("error:", 0) == 0 || line.rfind("jammed:", 0) == 0) reason = line;
+  return reason;
+}
+
+// ", eta_r = M +- E" from a finished point's summary, for the progress line.
+std::string eta_text(const fs::path& point_dir) {
+  std::ifstream in(point_dir / "summary.json");
+  const nlohmann::json s = nlohmann::json::parse(in, nullptr, false);
+  if (s.is_discarded() || !s.contains("eta_r") || !s["eta_r"]["mean"].is_number()) return "";
+  char b[96];
+  std::snprintf(b, sizeof b, ", eta_r = %.4g +- %.2g", s["eta_r"]["mean"].get<double>(),
+                s["eta_r"]["sem"].is_number() ? s["eta_r"]["sem"].get<double>() : 0.0);
+  return b;
+}
+
+struct Job {
+  pid_t pid = -1;
+  const Point* point = nullptr;
+  Clock::time_point start;
+  PointLock lock;
+  PointRecord record;
+  bool over_budget = false;
+};
+}  // namespace
+
+void check_and_record_points(const Campaign& c, const fs::path& dir) {
+  const fs::path record = dir / "sweep.json";
+  nlohmann::ordered_json known = nlohmann::ordered_json::object();
+  if (fs::exists(record)) {
+    std::ifstream in(record);
+    const nlohmann::ordered_json j = nlohmann::ordered_json::parse(in, nullptr, false);
+    if (j.is_discarded() || !j.contains("points"))
+      throw InputError(record.string() + ": unreadable; it records the campaign this folder was started with");
+    known = j["points"];
+    for (const auto& [name, identity] : known.items()) {
+      const Point* p = c.find(name);
+      if (!p)
+        throw InputError("campaign changed: point " + name + " of " + dir.string() +
+                         " is no longer in the campaign (only adding points is allowed; use another --out)");
+      if (p->identity != identity.get<std::string>())
+        throw InputError("campaign changed: point " + name + " now differs in " +
+                         differences(identity.get<std::string>(), p->identity) +
+                         " (only adding points is allowed; use another --out)");
+    }
+  }
+  for (const Point& p : c.points) known[p.name] = p.identity;
+  fs::create_directories(dir);
+  io::write_text_atomically(record.string(),
+                            nlohmann::ordered_json{{"campaign", c.source}, {"points", known}}.dump(1) + "\n");
+}
+
+int run_sweep(const Campaign& c, const SweepOptions& o) {
+  std::vector<const Point*> selected;
+  if (!o.only_point.empty()) {
+    const Point* p = c.find(o.only_point);
+    if (!p) throw InputError("--point: '" + o.only_point + "' is not a point of this campaign (see --list)");
+    selected.push_back(p);
+  } else {
+    for (const Point& p : c.points) selected.push_back(&p);
+  }
+  const std::string exe = o.executable.empty() ? fs::read_symlink("/proc/self/exe").string() : o.executable;
+  check_and_record_points(c, o.out_dir);
+
+  std::deque<const Point*> todo;
+  int skipped_done = 0, skipped_failed = 0;
+  for (const Point* p : selected) {
+    const PointRecord r = read_record(point_dir(o.out_dir, *p));
+    if (r.status == "done" || r.status == "jammed") ++skipped_done;
+    else if (r.status == "failed" && !o.retry_failed) ++skipped_failed;
+    else todo.push_back(p);
+  }
+  write_table(c, o.out_dir);
+  auto say = [&](const std::string& s) {
+    if (!o.quiet) std::printf("[%s] %s\n", now_text().c_str(), s.c_str()), std::fflush(stdout);
+  };
+  say(std::to_string(selected.size()) + " point(s): " + std::to_string(skipped_done) + " finished, " +
+      std::to_string(skipped_failed) + " failed (kept; --retry-failed runs them again), " +
+      std::to_string(todo.size()) + " to run, " + std::to_string(o.jobs) + " at a time on " +
+      std::to_string(o.threads) + " thread(s) each");
+
+  stop_signal.store(0);
+  struct sigaction sa {};
+  sa.sa_handler = on_sweep_signal;
+  sigemptyset(&sa.sa_mask);
+  struct sigaction old_int {}, old_term {};
+  sigaction(SIGINT, &sa, &old_int);
+  sigaction(SIGTERM, &sa, &old_term);
+  const pid_t parent = getpid();
+
+  std::vector<Job> jobs;
+  int failed = 0, busy_elsewhere = 0;
+  auto start = [&](const Point* p) {
+    const fs::path pd = point_dir(o.out_dir, *p);
+    fs::create_directories(pd);
+    PointLock lock(pd);
+    if (!lock.held()) {
+      ++busy_elsewhere;
+      say(p->name + " is being run by another process; skipped");
+      return;
+    }
+    PointRecord r = read_record(pd);
+    std::vector<std::string> args = {exe, "run", c.case_file};
+    for (const std::string& s : c.overrides(*p)) args.insert(args.end(), {"--set", s});
+    args.insert(args.end(), {"--threads", std::to_string(o.threads)});
+    if (fs::is_regular_file(pd / "checkpoint.h5")) {
+      args.insert(args.end(), {"--restart", (pd / "checkpoint.h5").string()});
+    } else {  // never checkpointed: start again from nothing
+      for (const char* f : {"run.h5", "run.xdmf", "summary.json"}) fs::remove(pd / f);
+      args.insert(args.end(), {"--out", pd.string()});
+    }
+    r.status = "running";
+    r.message.clear();
+    ++r.runs;
+    write_record(pd, r);
+    const std::string log = (pd / "log.txt").string();
+    const pid_t pid = fork();
+    if (pid == 0) {
+      // A point outlives no sweep: when the sweep dies, the run checkpoints and stops (SIGTERM).
+      prctl(PR_SET_PDEATHSIG, SIGTERM);
+      if (getppid() != parent) _exit(143);
+      fcntl(lock.fd(), F_SETFD, 0);  // the run holds the point's lock too, until it has checkpointed and ended
+      signal(SIGINT, SIG_IGN);  // Ctrl-C reaches the whole process group; the sweep forwards it as SIGTERM
+      signal(SIGTERM, SIG_DFL);
+      const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+      if (fd >= 0) dup2(fd, 1), dup2(fd, 2);
+      std::vector<char*> argv;
+      for (std::string& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      execv(exe.c_str(), argv.data());
+      _exit(127);
+    }
+    if (pid < 0) throw std::runtime_error("fork failed for point " + p->name);
+    say("start " + p->name + (r.runs > 1 ? " (continued, run " + std::to_string(r.runs) + ")" : ""));
+    jobs.push_back({pid, p, Clock::now(), std::move(lock), r, false});
+  };
+
+  auto finish = [&](Job& j, int status) {
+    const fs::path pd = point_dir(o.out_dir, *j.point);
+    PointRecord& r = j.record;
+    r.wall_seconds += std::chrono::duration<double>(Clock::now() - j.start).count();
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    r.exit_code = code;
+    const std::string reason = last_reason(pd / "log.txt");
+    if (code == 0) {
+      r.status = "done";
+    } else if (code == exit_jammed) {
+      r.status = "jammed";
+      r.message = reason;
+    } else if ((code == 143 || code == 130) && stop_signal.load() && !j.over_budget) {
+      r.status = "pending";  // stopped with the sweep: continues from its checkpoint next time
+    } else {
+      r.status = "failed";
+      r.message = j.over_budget ? "wall-clock budget of " + std::to_string(o.point_seconds) +
+                                      " s used up (stopped at a checkpoint; continue with --retry-failed)"
+                                : reason.empty() ? "exit code " + std::to_string(code) : reason;
+      ++failed;
+    }
+    write_record(pd, r);
+    write_table(c, o.out_dir);
+    say(r.status + " " + j.point->name + (r.message.empty() ? "" : ": " + r.message) + eta_text(pd));
+  };
+
+  bool forwarded = false;
+  while ((!todo.empty() && !stop_signal.load()) || !jobs.empty()) {
+    while (static_cast<int>(jobs.size()) < o.jobs && !todo.empty() && !stop_signal.load()) {
+      const Point* p = todo.front();
+      todo.pop_front();
+      start(p);
+    }
+    if (stop_signal.load() && !forwarded) {
+      for (Job& j : jobs) kill(j.pid, SIGTERM);
+      forwarded = true;
+      say("stopping: each running point checkpoints; the same command continues the sweep");
+    }
+    for (Job& j : jobs)
+      if (o.point_seconds > 0 && !j.over_budget &&
+          std::chrono::duration<double>(Clock::now() - j.start).count() > o.point_seconds) {
+        kill(j.pid, SIGTERM);
+        j.over_budget = true;
+      }
+    int status = 0;
+    const pid_t done = waitpid(-1, &status, WNOHANG);
+    if (done > 0) {
+      for (std::size_t k = 0; k < jobs.size(); ++k)
+        if (jobs[k].pid == done) {
+          finish(jobs[k], status);
+          jobs.erase(jobs.begin() + static_cast<long>(k));
+          break;
+        }
+      continue;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  sigaction(SIGINT, &old_int, nullptr);
+  sigaction(SIGTERM, &old_term, nullptr);
+  write_table(c, o.out_dir);
+
+  std::map<std::string, int> counts;
+  for (const Point* p : selected) {
+    std::string s = read_record(point_dir(o.out_dir, *p)).status;
+    if (s == "running" && !locked_elsewhere(point_dir(o.out_dir, *p))) s = "pending";
+    ++counts[s];
+  }
+  std::string line;
+  for (const auto& [s, n] : counts) line += (line.empty() ? "" : ", ") + std::to_string(n) + " " + s;
+  say(line + "; table: " + (o.out_dir / "campaign.json").string() + ", " + (o.out_dir / "campaign.csv").string());
+  if (const int sig = stop_signal.load()) return 128 + sig;
+  return failed > 0 || counts["failed"] > 0 ? exit_numerical_error : 0;
+}
+
+}  // namespace suspend::campaign

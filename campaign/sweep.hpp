@@ -1,0 +1,32 @@
+// `suspend sweep`: runs the points of a campaign, each as a child `suspend run` process in DIR/points/NAME, up to
+// `jobs` at a time, and keeps DIR/campaign.json/.csv up to date. Resumable after anything: finished points are
+// skipped, interrupted ones continue from their checkpoints (bit for bit on the same thread count), failed ones
+// only with retry_failed. A campaign file changed since DIR was started is refused, except for added points.
+#pragma once
+#include <filesystem>
+#include <string>
+
+#include "campaign/campaign.hpp"
+
+namespace suspend::campaign {
+
+struct SweepOptions {
+  std::filesystem::path out_dir;
+  int jobs = 1;                // points run at once
+  int threads = 1;             // OpenMP threads of each point
+  bool quiet = false;
+  bool retry_failed = false;
+  double point_seconds = 0.0;  // wall-clock budget of one run of a point (0: none); over it the point is stopped
+                               // at a checkpoint and marked failed
+  std::string only_point;      // run this point alone (scheduler arrays); empty: every point
+  std::string executable;      // the suspend program run for each point; empty: this process's own
+};
+
+// Returns 0 when every selected point ended done or jammed, 3 when some failed, 128 + signal when stopped.
+int run_sweep(const Campaign& c, const SweepOptions& o);
+
+// Refuses (InputError, naming the point and the keys) a campaign whose points differ from those DIR was started
+// with, other than added points; then records the campaign's points in DIR/sweep.json.
+void check_and_record_points(const Campaign& c, const std::filesystem::path& dir);
+
+}  // namespace suspend::campaign

@@ -1,0 +1,138 @@
+#include "campaign/table.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "campaign/point_record.hpp"
+#include "io/atomic_file.hpp"
+#include "io/derived_rheology.hpp"
+
+namespace suspend::campaign {
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+namespace {
+// A YAML scalar as JSON: numbers and booleans as such, anything else as text.
+json json_value(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (!text.empty() && end == text.c_str() + text.size()) return v;
+  if (text == "true" || text == "false") return text == "true";
+  return text;
+}
+
+// What the fits group by, read from the point's resolved case.
+json case_facts(const Point& p) {
+  const YAML::Node n = YAML::Load(p.identity);
+  json f;
+  f["model"] = n["hydrodynamics"]["model"].as<std::string>();
+  f["control"] = n["flow"]["control"].as<std::string>();
+  f["phi"] = n["particles"]["phi"].as<double>();
+  const YAML::Node contact = n["contact"];
+  f["law"] = contact["law"].as<std::string>();
+  if (contact["mu_s"])
+    f["mu_s"] = contact["mu_s"].as<double>();
+  else if (contact["mu"])
+    f["mu_s"] = contact["mu"].as<double>();
+  else
+    f["mu_s"] = 0.0;
+  f["g_adh"] = contact["g_adh"] ? contact["g_adh"].as<double>() : 0.0;
+  if (n["flow"]["shear_stress"]) f["shear_stress"] = n["flow"]["shear_stress"].as<double>();
+  f["strain"] = n["run"]["strain"].as<double>();
+  return f;
+}
+}  // namespace
+
+json gather_table(const Campaign& c, const fs::path& dir) {
+  json points = json::array();
+  for (const Point& p : c.points) {
+    const fs::path pd = point_dir(dir, p);
+    PointRecord r = read_record(pd);
+    if (r.status == "running" && !locked_elsewhere(pd)) r.status = "pending";  // its sweep was stopped
+    json e;
+    e["name"] = p.name;
+    e["status"] = r.status;
+    e["parameters"] = json::object();
+    for (const Assignment& a : p.parameters) e["parameters"][a.key] = json_value(a.value);
+    e["case"] = case_facts(p);
+    e["wall_seconds"] = r.wall_seconds;
+    if (!r.message.empty()) e["message"] = r.message;
+    e["summary"] = nullptr;
+    if (r.status == "done" || r.status == "jammed") {
+      std::ifstream in(pd / "summary.json");
+      const json s = json::parse(in, nullptr, false);
+      if (!s.is_discarded()) {
+        e["summary"] = s;
+        e["derived"] = io::derived_rheology(s);
+      }
+    }
+    points.push_back(std::move(e));
+  }
+  return {{"campaign", c.source}, {"case", c.case_file}, {"points", points}};
+}
+
+std::string table_csv(const Campaign& c, const json& table) {
+  const std::vector<std::string> derived = {"eta_r", "Sigma_c12/Sigma_12", "Sigma_c22/Sigma_12", "Sigma_c11/Sigma_c12",
+                                            "N1", "N2", "Pi", "mu", "J", "sigma_star", "G_adh"};
+  std::ostringstream out;
+  out << "name,status";
+  for (const std::string& k : c.varied_keys) out << ',' << k;
+  out << ",phi,mu_s,g_adh";
+  for (const std::string& k : derived) out << ',' << k << ',' << k << "_sem";
+  out << ",contacts_per_particle,contacts_per_particle_sem,window_from,window_to,wall_seconds\n";
+  auto number = [&](const json& v) {  // null (an undefined mean or error) stays an empty cell
+    char b[32] = "";
+    if (v.is_number()) std::snprintf(b, sizeof b, "%.8g", v.get<double>());
+    out << ',' << b;
+  };
+  for (std::size_t i = 0; i < c.points.size(); ++i) {
+    const json& e = table["points"][i];
+    out << e["name"].get<std::string>() << ',' << e["status"].get<std::string>();
+    for (const std::string& k : c.varied_keys) {  // as written in the campaign file
+      out << ',';
+      for (const Assignment& a : c.points[i].parameters)
+        if (a.key == k) out << (a.value.find(',') == std::string::npos ? a.value : '"' + a.value + '"');
+    }
+    const json& s = e["summary"];
+    if (s.is_null()) {
+      out << ',' << ',' << e["case"]["mu_s"].dump() << ',' << e["case"]["g_adh"].dump();
+      for (std::size_t k = 0; k < 2 * derived.size() + 4; ++k) out << ',';
+      number(e["wall_seconds"]);
+      out << '\n';
+      continue;
+    }
+    number(s["phi"]);
+    number(e["case"]["mu_s"]);
+    number(e["case"]["g_adh"]);
+    for (const std::string& k : derived) {
+      if (e["derived"].contains(k)) {
+        number(e["derived"][k]["mean"]);
+        number(e["derived"][k]["sem"]);
+      } else {
+        out << ",,";
+      }
+    }
+    const double n = s["particles"].get<double>();
+    const json& z = s["contacts"];
+    number(z["mean"].is_number() ? json(z["mean"].get<double>() / n) : json());
+    number(z["sem"].is_number() ? json(z["sem"].get<double>() / n) : json());
+    number(s["window"]["from_strain"]);
+    number(s["window"]["to_strain"]);
+    number(e["wall_seconds"]);
+    out << '\n';
+  }
+  return out.str();
+}
+
+void write_table(const Campaign& c, const fs::path& dir) {
+  const json table = gather_table(c, dir);
+  io::write_text_atomically((dir / "campaign.json").string(), table.dump(2) + "\n");
+  io::write_text_atomically((dir / "campaign.csv").string(), table_csv(c, table));
+}
+
+}  // namespace suspend::campaign

@@ -1,0 +1,169 @@
+// `suspend sweep` as users run it: a campaign gives the same table run with two jobs, after SIGKILL of the sweep
+// and its runs followed by the same command, and point by point as a scheduler would run it; a changed campaign is
+// refused naming the key; a stress-controlled point that stops flowing ends as `jammed`; a point over its
+// wall-clock budget is `failed` and kept until --retry-failed.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "io/hdf5.hpp"
+#include "tests/integration/cli_support.hpp"
+
+using namespace suspend::test;
+using json = nlohmann::json;
+
+namespace {
+const std::string restart_case = SUSPEND_SOURCE_DIR "/tests/data/restart_case.yaml";
+
+#ifdef NDEBUG
+constexpr const char* strain = "0.3";
+constexpr double kill_strain = 0.1;
+#else
+constexpr const char* strain = "0.12";  // Debug + sanitizers: about 30x slower
+constexpr double kill_strain = 0.05;
+#endif
+
+// Three points of the frictional restart case, checkpointed every 0.05 strain.
+std::string campaign(const std::string& name, const std::string& extra_points = "") {
+  return write_case(name, "case: " + restart_case + "\nset: {run.strain: " + strain +
+                              ", particles.count: 60}\nvary:\n  particles.phi: [0.40, 0.45]\npoints:\n"
+                              "  - {particles.phi: 0.5, contact.mu: 0.5}\n" + extra_points);
+}
+
+// campaign.json without what depends on the machine (wall time).
+json table(const std::string& dir) {
+  json t = json::parse(read_text(dir + "/campaign.json"));
+  for (json& p : t["points"]) p.erase("wall_seconds");
+  return t;
+}
+
+double checkpoint_strain(const std::string& file) {
+  try {
+    suspend::io::h5::File f = suspend::io::h5::File::open(file, false);
+    return suspend::io::h5::double_attribute(f.id(), ".", "strain");
+  } catch (const std::exception&) {
+    return 0.0;
+  }
+}
+}  // namespace
+
+TEST(Sweep, SameTableWithJobsAfterSigkillAndPointByPoint) {
+  const std::string file = campaign("sweep.yaml");
+  const std::string a = fresh_dir("sweep_a"), b = fresh_dir("sweep_b"), c = fresh_dir("sweep_c");
+  const Result ra = run({"sweep", file, "--out", a, "--jobs", "2", "--quiet"});
+  ASSERT_EQ(ra.code, 0) << ra.err;
+  const json ta = table(a);
+  ASSERT_EQ(ta["points"].size(), 3u);
+  for (const json& p : ta["points"]) {
+    EXPECT_EQ(p["status"], "done") << p.dump();
+    EXPECT_GT(p["summary"]["eta_r"]["mean"].get<double>(), 1.0) << p.dump();
+    EXPECT_TRUE(p["derived"].contains("mu")) << p.dump();
+  }
+  EXPECT_EQ(ta["points"][0]["name"], "phi0.40");
+  EXPECT_EQ(ta["points"][2]["name"], "phi0.5_mu0.5");
+  EXPECT_EQ(ta["points"][2]["parameters"]["contact.mu"], 0.5);
+  EXPECT_EQ(ta["points"][2]["case"]["mu_s"], 0.5);
+
+  // B: the sweep and its runs are killed together (SIGKILL) mid-point, then the same command finishes it.
+  const pid_t pid = spawn({"sweep", file, "--out", b, "--jobs", "1", "--quiet"}, b + ".err", true);
+  const auto t0 = std::chrono::steady_clock::now();
+  bool killed = false;
+  while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(120) && !killed) {
+    for (const char* p : {"phi0.40", "phi0.45", "phi0.5_mu0.5"}) {
+      const double s = checkpoint_strain(b + "/points/" + p + "/checkpoint.h5");
+      if (s >= kill_strain && s < 0.25 && !fs::exists(b + "/points/" + p + "/summary.json")) {
+        kill(-pid, SIGKILL);
+        killed = true;
+        break;
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(killed) << "no point was caught mid-run";
+  EXPECT_EQ(wait_exit(pid), 128 + SIGKILL);
+  const Result rb = run({"sweep", file, "--out", b, "--jobs", "1", "--quiet"});
+  ASSERT_EQ(rb.code, 0) << rb.err;
+  json tb = table(b);
+  tb["campaign"] = ta["campaign"];
+  EXPECT_EQ(tb, ta) << "the table after SIGKILL + rerun differs from the uninterrupted one";
+
+  // C: one point at a time, as a scheduler array would (--list gives the names).
+  const Result list = run({"sweep", file, "--list"});
+  ASSERT_EQ(list.code, 0);
+  for (const char* p : {"phi0.40", "phi0.45", "phi0.5_mu0.5"})
+    ASSERT_EQ(run({"sweep", file, "--out", c, "--point", p, "--quiet"}).code, 0) << p;
+  EXPECT_EQ(table(c), ta);
+}
+
+TEST(Sweep, ChangedCampaignIsRefusedAddedPointsRun) {
+  const std::string dir = fresh_dir("sweep_changed");
+  ASSERT_EQ(run({"sweep", campaign("c1.yaml"), "--out", dir, "--quiet"}).code, 0);
+  const std::string changed = write_case(
+      "c2.yaml", "case: " + restart_case + "\nset: {run.strain: " + strain +
+                     ", particles.count: 60}\nvary:\n  particles.phi: [0.40, 0.45]\npoints:\n"
+                     "  - {particles.phi: 0.5, contact.mu: 0.6}\n");
+  expect_input_error({"sweep", changed, "--out", dir}, "point phi0.5_mu0.5", "");
+  const std::string seed = write_case(
+      "c3.yaml", "case: " + restart_case + "\nset: {run.strain: " + strain + ", particles.count: 60, run.seed: 9}\n"
+                 "vary:\n  particles.phi: [0.40, 0.45]\npoints:\n  - {particles.phi: 0.5, contact.mu: 0.5}\n");
+  expect_input_error({"sweep", seed, "--out", dir}, "run.seed 3 -> 9", "");
+  const std::string added = campaign("c4.yaml", "  - {particles.phi: 0.42}\n");
+  const Result r = run({"sweep", added, "--out", dir, "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json t = table(dir);
+  ASSERT_EQ(t["points"].size(), 4u);
+  EXPECT_EQ(t["points"][3]["name"], "phi0.42");
+  EXPECT_EQ(t["points"][3]["status"], "done");
+  expect_input_error({"sweep", campaign("c5.yaml"), "--out", dir, "--point", "phi0.99"}, "--point", "");
+  expect_input_error({"sweep", write_case("c6.yaml", "case: " + restart_case + "\nvary: {particles.phi: [0.4, 0.9]}\n"),
+                      "--out", fresh_dir("sweep_bad")},
+                     "point phi0.9: particles.phi", fresh_dir("sweep_bad"));
+  expect_input_error({"sweep", write_case("c7.yaml", "case: " + restart_case + "\nvary: {particles.phi: 0.4}\n"),
+                      "--out", dir},
+                     "vary.particles.phi: must be a non-empty list", "");
+  expect_input_error({"sweep", write_case("c8.yaml", "case: " + restart_case + "\nvaryy: {}\n"), "--out", dir},
+                     "did you mean 'vary'", "");
+}
+
+TEST(Sweep, StoppedFlowEndsJammedAndBudgetEndsFailed) {
+  const std::string dir = fresh_dir("sweep_jam");
+  // Imposed stress 1 on a suspension of viscosity ~10: with run.jammed.viscosity = 3 its mean rate (~0.1) is below
+  // the threshold 1/3, so it ends as jammed after the first window (0.01 strain at that viscosity).
+  const std::string file = write_case(
+      "jam.yaml", "case: " + restart_case + "\nset: {particles.count: 60, flow.control: stress, flow.shear_stress: 1, "
+                  "run.jammed.viscosity: 3, run.jammed.strain: 0.01}\npoints:\n  - {run.strain: 5}\n");
+  const Result r = run({"sweep", file, "--out", dir, "--quiet"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  const json t = table(dir);
+  EXPECT_EQ(t["points"][0]["status"], "jammed");
+  EXPECT_EQ(t["points"][0]["summary"]["status"], "jammed");
+  EXPECT_LT(t["points"][0]["summary"]["jammed"]["mean_shear_rate"].get<double>(), 1.0 / 3.0);
+  EXPECT_NE(t["points"][0]["message"].get<std::string>().find("jammed"), std::string::npos);
+
+  const std::string slow = fresh_dir("sweep_budget");
+  const std::string long_case = write_case("long.yaml", "case: " + restart_case + "\nset: {run.strain: 50}\n");
+  const Result b = run({"sweep", long_case, "--out", slow, "--quiet", "--point-seconds", "1"});
+  EXPECT_EQ(b.code, 3) << b.err;
+  json tb = table(slow);
+  EXPECT_EQ(tb["points"][0]["status"], "failed");
+  EXPECT_NE(tb["points"][0]["message"].get<std::string>().find("budget"), std::string::npos);
+  EXPECT_TRUE(fs::exists(slow + "/points/base/checkpoint.h5"));
+  EXPECT_EQ(run({"sweep", long_case, "--out", slow, "--quiet"}).code, 3) << "failed points are kept, not rerun";
+  EXPECT_EQ(table(slow)["points"][0]["status"], "failed");
+  EXPECT_EQ(run({"sweep", long_case, "--out", slow, "--quiet", "--retry-failed", "--point-seconds", "1"}).code, 3);
+  EXPECT_NE(read_text(slow + "/points/base/point.json").find("\"runs\": 2"), std::string::npos);
+}
+
+TEST(Sweep, MpiRanksGiveTheSameTable) {
+  if (std::system("command -v mpirun > /dev/null 2>&1") != 0) GTEST_SKIP() << "no mpirun (Debian openmpi-bin)";
+  const std::string file = campaign("mpi.yaml");
+  const std::string a = fresh_dir("mpi_a"), b = fresh_dir("mpi_b");
+  ASSERT_EQ(run({"sweep", file, "--out", a, "--jobs", "2", "--quiet"}).code, 0);
+  // mpirun refuses root unless told; --oversubscribe: three ranks on a two-core machine.
+  const std::string command = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --oversubscribe -n 3 " +
+                              suspend_bin + " sweep " + file + " --out " + b + " --quiet > " + b + ".log 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(b + ".log");
+  EXPECT_EQ(table(b), table(a));
+}
