@@ -74,6 +74,7 @@ void read_particles(SchemaReader r, Case& c) {
 }  // namespace
 
 Case parse_case(const YAML::Node& root, const std::string& source) {
+  check_yaml_structure(root);
   Case c;
   c.source = source;
   SchemaReader top(root, "");
@@ -241,14 +242,8 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
 }
 
 Case load_case(const std::string& path, const std::vector<std::string>& overrides) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": case file not found");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw InputError(path + ": not valid YAML at line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
-  }
-  if (!root || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+
+  YAML::Node root = load_yaml_document(path, "case");
   for (const std::string& o : overrides) apply_override(root, o);
   return parse_case(root, path);
 }

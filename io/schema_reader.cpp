@@ -1,5 +1,8 @@
 #include "io/schema_reader.hpp"
 
+#include <filesystem>
+#include <set>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -187,11 +190,52 @@ std::string closest_word(const std::string& word, const std::vector<std::string>
   return best;
 }
 
+YAML::Node load_yaml_document(const std::string& path, const std::string& what) {
+  namespace fs = std::filesystem;
+  if (!fs::exists(path)) throw InputError(path + ": " + what + " file not found");
+  if (fs::is_directory(path)) throw InputError(path + ": is a directory, not a " + what + " file");
+  if (!fs::is_regular_file(path)) throw InputError(path + ": not a regular file; a " + what + " file is YAML text");
+  std::vector<YAML::Node> docs;
+  try {
+    docs = YAML::LoadAllFromFile(path);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path + ": not valid YAML at line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+  }
+  if (docs.size() > 1)
+    throw InputError(path + ": holds " + std::to_string(docs.size()) + " YAML documents (separated by ---); a " + what +
+                     " file is one");
+  YAML::Node root = docs.empty() || !docs[0] || docs[0].IsNull() ? YAML::Node(YAML::NodeType::Map) : docs[0];
+  check_yaml_structure(root);
+  return root;
+}
+
+void check_yaml_structure(const YAML::Node& n, const std::string& path) {
+  const std::string where = path.empty() ? "case file" : path;
+  const std::string& tag = n.Tag();
+  if (!tag.empty() && tag != "?" && tag != "!")
+    throw InputError(where + ": YAML tags (" + tag + ") are not read; remove the tag and give the plain value");
+  if (n.IsMap()) {
+    std::set<std::string> seen;
+    for (const auto& kv : n) {
+      const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
+      const std::string child = path.empty() ? key : path + "." + key;
+      if (!kv.first.IsScalar()) throw InputError(where + ": a key must be a plain word, not a list or mapping");
+      if (!seen.insert(key).second)
+        throw InputError(child + ": given twice in one mapping (YAML keeps only one; give it once)");
+      check_yaml_structure(kv.second, child);
+    }
+  } else if (n.IsSequence()) {
+    for (std::size_t i = 0; i < n.size(); ++i) check_yaml_structure(n[i], path + "[" + std::to_string(i) + "]");
+  }
+}
+
 void apply_override(YAML::Node& root, const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
     throw InputError("--set " + assignment + ": expected KEY=VALUE, e.g. --set particles.phi=0.52");
   const std::string path = assignment.substr(0, eq);
+  if (path.front() == '.' || path.back() == '.')
+    throw InputError("--set " + assignment + ": '" + path + "' starts or ends with a dot; give a dotted key such as particles.phi");
   const std::string value = assignment.substr(eq + 1);
   std::vector<std::string> keys;
   std::stringstream ss(path);
@@ -205,6 +249,7 @@ void apply_override(YAML::Node& root, const std::string& assignment) {
   } catch (const YAML::Exception& e) {
     throw InputError("--set " + path + ": cannot parse value '" + value + "' (" + e.msg + ")");
   }
+  check_yaml_structure(parsed, path);
   // yaml-cpp nodes are references: walk by building the chain of nodes explicitly.
   if (root.IsScalar() || root.IsSequence()) throw InputError("case file: expected a mapping of sections");
   std::vector<YAML::Node> chain{root};

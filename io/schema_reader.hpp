@@ -65,6 +65,14 @@ class SchemaReader {
   std::set<std::string> asked_;
 };
 
+// Reads a YAML file that must hold one document (an empty file is an empty mapping), checked with
+// check_yaml_structure. `what` names the file in messages ("case", "campaign"). InputError on any problem.
+YAML::Node load_yaml_document(const std::string& path, const std::string& what);
+
+// Refuses what YAML allows but a case cannot mean: a key given twice in one mapping (yaml-cpp would keep the first
+// silently), explicit tags (!!str 0.4), non-scalar keys. InputError names the key path.
+void check_yaml_structure(const YAML::Node& n, const std::string& path = "");
+
 // Applies `--set a.b.c=VALUE` (VALUE parsed as YAML) to a case tree, creating mappings as needed.
 void apply_override(YAML::Node& root, const std::string& assignment);
 

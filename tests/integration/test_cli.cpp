@@ -65,6 +65,12 @@ TEST(Cli, BadInputExitsWithTwoAndWritesNothing) {
                      "--restart", "");
   expect_input_error({"check", write_case("broken.yaml", "particles: [1, 2\n")}, "not valid YAML", "");
   expect_input_error({"run", restart_case, "--out", out, "--threads", "0"}, "threads", out);
+  expect_input_error({"run", restart_case, "--out", out, "--set", "particles.phi.=0.45"}, "ends with a dot", out);
+  expect_input_error({"run", write_case("two_docs.yaml", "particles: {phi: 0.4, count: 50}\n---\nrun: {strain: 1}\n"),
+                      "--out", out},
+                     "holds 2 YAML documents", out);
+  expect_input_error({"run", scratch(), "--out", out}, "is a directory", out);
+  expect_input_error({"run", "/dev/null", "--out", out}, "not a regular file", out);
 }
 
 TEST(Cli, CheckPrintsTheResolvedCaseWithDerivedValues) {

@@ -109,6 +109,9 @@ TEST(Case, MissingInitialFileIsReported) {
 
 TEST(Case, MalformedOverride) {
   EXPECT_NE(error_of(base, {"particles.phi"}).find("expected KEY=VALUE"), std::string::npos);
+  EXPECT_NE(error_of(base, {"particles.phi.=0.45"}).find("ends with a dot"), std::string::npos);
+  EXPECT_NE(error_of(base, {".particles.phi=0.45"}).find("starts or ends with a dot"), std::string::npos);
+  EXPECT_NE(error_of(base, {"particles.phi=!!str 0.45"}).find("particles.phi: YAML tags"), std::string::npos);
   EXPECT_NE(error_of(base, {"particles.phi.x=1"}).find("holds a value"), std::string::npos);
 }
 
@@ -257,4 +260,13 @@ TEST(Case, JammedThresholdsAreReadAndPrintedUnderImposedStress) {
   EXPECT_DOUBLE_EQ(c.run.jammed_strain, 0.1);
   EXPECT_DOUBLE_EQ(to_yaml(c)["run"]["jammed"]["viscosity"].as<double>(), 500.0);
   EXPECT_NE(error_of(base, {"run.jammed.viscosity=0"}).find("run.jammed.viscosity"), std::string::npos);
+}
+
+TEST(Case, KeysGivenTwiceAndTagsAreRefused) {
+  // yaml-cpp keeps both entries of a repeated key and reads the first: the second would be silently ignored.
+  EXPECT_NE(error_of(std::string(base) + "flow: {shear_rate: 2, shear_rate: 3}\n").find("flow.shear_rate: given twice"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::string(base) + "run: {strain: 3}\n").find("run: given twice"), std::string::npos);
+  EXPECT_NE(error_of(std::string(base) + "title: !!str suspension\n").find("title: YAML tags"), std::string::npos);
+  EXPECT_EQ(error_of(std::string(base) + "title: \"quoted\"\n"), "");
 }
