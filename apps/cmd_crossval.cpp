@@ -1,7 +1,8 @@
 // `suspend crossval CASE.yaml --out DIR [--set KEY=VALUE]... [--threads N] [--quiet]`: the same case with pairwise
 // lubrication-DEM and with FCM + sub-grid lubrication, from the same initial configuration (same seed or file) and
 // the same contact law, then a side-by-side table of the steady-state rheology, also written to DIR/crossval.json.
-// A method whose DIR/<method>/summary.json exists is not rerun (an interrupted cross-validation resumes).
+// A finished method is not rerun, an interrupted one continues from its checkpoint; a folder that holds a run of
+// another case is refused (exit 2, naming the keys that differ).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +15,7 @@
 #include "io/atomic_file.hpp"
 #include "io/case.hpp"
 #include "io/derived_rheology.hpp"
+#include "io/hdf5.hpp"
 #include "io/runner.hpp"
 
 namespace suspend::app {
@@ -21,6 +23,13 @@ namespace suspend::app {
 namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
+
+// A method's run that reached run.strain (summaries of stopped, jammed or failed runs say so in `status`).
+bool finished(const fs::path& out) {
+  std::ifstream in(out / "summary.json");
+  const json s = json::parse(in, nullptr, false);
+  return !s.is_discarded() && s.is_object() && s.value("status", "done") == "done";
+}
 
 // The table's rows, from one summary.json.
 json observables(const json& summary) {
@@ -58,9 +67,25 @@ void add_crossval_command(CLI::App& app) {
       o.push_back(std::string("hydrodynamics.model=") + model);
       cases.emplace_back(model, io::load_case(opt->case_file, o));
     }
+    // A method's folder is reused (finished, or continued from its checkpoint) only for exactly the same case.
+    for (const auto& [model, c] : cases) {
+      const fs::path run_file = dir / model / "run.h5";
+      if (!fs::is_regular_file(run_file)) continue;
+      std::string before;
+      try {
+        io::h5::File f = io::h5::File::open(run_file.string(), false);
+        before = io::result_identity(io::parse_case(YAML::Load(io::h5::string_attribute(f.id(), ".", "case")), c.source));
+      } catch (const std::exception&) {
+        before = "unreadable: true";
+      }
+      const std::string now = io::result_identity(c);
+      if (before != now)
+        throw InputError("--out: " + (dir / model).string() + " holds a run of another case (" +
+                         io::yaml_differences(before, now) + "); give another --out or remove it");
+    }
     for (const auto& [model, c] : cases) {
       const fs::path out = dir / model;
-      if (!fs::is_regular_file(out / "summary.json")) {
+      if (!finished(out)) {
         if (!opt->run.quiet) std::printf("== %s ==\n", model.c_str());
         io::RunOptions r = opt->run;
         r.out_dir = out.string();

@@ -79,14 +79,6 @@ void append_product(const YAML::Node& vary, const std::string& where, std::vecto
   out.insert(out.end(), product.begin(), product.end());
 }
 
-std::string identity_of(const io::Case& c) {
-  YAML::Node n = io::to_yaml(c);
-  n["run"].remove("threads");  // the sweep sets the thread count
-  if (n["hydrodynamics"]["fcm"]) n["hydrodynamics"]["fcm"].remove("cache_dir");  // where, not what
-  YAML::Emitter e;
-  e << n;
-  return e.c_str();
-}
 }  // namespace
 
 std::vector<std::string> Campaign::overrides(const Point& p) const {
@@ -154,7 +146,7 @@ Campaign load_campaign(const std::string& path) {
     if (!names.emplace(p.name, c.points.size()).second)
       throw InputError("points: two points are both named '" + p.name + "' (the same parameters given twice)");
     try {
-      p.identity = identity_of(io::load_case(c.case_file, c.overrides(p)));
+      p.identity = io::result_identity(io::load_case(c.case_file, c.overrides(p)));
     } catch (const InputError& e) {
       throw InputError("point " + p.name + ": " + e.what());
     }

@@ -5,7 +5,6 @@
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
-#include <yaml-cpp/yaml.h>
 
 #include <atomic>
 #include <chrono>
@@ -21,6 +20,7 @@
 #include "campaign/table.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/case.hpp"
 
 namespace suspend::campaign {
 
@@ -30,37 +30,6 @@ using Clock = std::chrono::steady_clock;
 namespace {
 std::atomic<int> stop_signal{0};
 extern "C" void on_sweep_signal(int sig) { stop_signal.store(sig); }
-
-// Every scalar of a YAML tree by dotted key, to name what changed between two resolved cases.
-void flatten(const YAML::Node& n, const std::string& prefix, std::map<std::string, std::string>& out) {
-  if (n.IsMap()) {
-    for (const auto& kv : n) flatten(kv.second, prefix.empty() ? kv.first.Scalar() : prefix + "." + kv.first.Scalar(), out);
-  } else if (n.IsSequence()) {
-    for (std::size_t i = 0; i < n.size(); ++i) flatten(n[i], prefix + "[" + std::to_string(i) + "]", out);
-  } else {
-    out[prefix] = n.IsScalar() ? n.Scalar() : "~";
-  }
-}
-
-std::string differences(const std::string& old_case, const std::string& new_case) {
-  std::map<std::string, std::string> a, b;
-  flatten(YAML::Load(old_case), "", a);
-  flatten(YAML::Load(new_case), "", b);
-  std::string out;
-  int shown = 0;
-  auto show = [&](const std::string& k, const std::string& from, const std::string& to) {
-    if (shown++ < 4) out += (out.empty() ? "" : ", ") + k + " " + from + " -> " + to;
-  };
-  for (const auto& [k, v] : a) {
-    auto it = b.find(k);
-    if (it == b.end()) show(k, v, "(absent)");
-    else if (it->second != v) show(k, v, it->second);
-  }
-  for (const auto& [k, v] : b)
-    if (!a.count(k)) show(k, "(absent)", v);
-  if (shown > 4) out += " and " + std::to_string(shown - 4) + " more";
-  return out;
-}
 
 std::string now_text() {
   const std::time_t t = std::time(nullptr);
@@ -115,7 +84,7 @@ void check_and_record_points(const Campaign& c, const fs::path& dir) {
                          " is no longer in the campaign (only adding points is allowed; use another --out)");
       if (p->identity != identity.get<std::string>())
         throw InputError("campaign changed: point " + name + " now differs in " +
-                         differences(identity.get<std::string>(), p->identity) +
+                         io::yaml_differences(identity.get<std::string>(), p->identity) +
                          " (only adding points is allowed; use another --out)");
     }
   }

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <optional>
 
@@ -245,7 +246,9 @@ Case load_case(const std::string& path, const std::vector<std::string>& override
 
   YAML::Node root = load_yaml_document(path, "case");
   for (const std::string& o : overrides) apply_override(root, o);
-  return parse_case(root, path);
+  Case c = parse_case(root, path);
+  c.overrides = overrides;
+  return c;
 }
 
 YAML::Node to_yaml(const Case& c) {
@@ -330,6 +333,49 @@ YAML::Node to_yaml(const Case& c) {
   r["output"]["checkpoint_every"] = number_node(c.run.output.checkpoint_every);
   r["output"]["checkpoint_seconds"] = number_node(c.run.output.checkpoint_seconds);
   return n;
+}
+
+std::string result_identity(const Case& c) {
+  YAML::Node n = to_yaml(c);
+  n["run"].remove("threads");  // how many, not what
+  if (n["hydrodynamics"]["fcm"]) n["hydrodynamics"]["fcm"].remove("cache_dir");  // where, not what
+  YAML::Emitter e;
+  e << n;
+  return e.c_str();
+}
+
+namespace {
+// Every scalar of a YAML tree by dotted key.
+void flatten(const YAML::Node& n, const std::string& prefix, std::map<std::string, std::string>& out) {
+  if (n.IsMap()) {
+    for (const auto& kv : n)
+      flatten(kv.second, prefix.empty() ? kv.first.Scalar() : prefix + "." + kv.first.Scalar(), out);
+  } else if (n.IsSequence()) {
+    for (std::size_t i = 0; i < n.size(); ++i) flatten(n[i], prefix + "[" + std::to_string(i) + "]", out);
+  } else {
+    out[prefix] = n.IsScalar() ? n.Scalar() : "~";
+  }
+}
+}  // namespace
+
+std::string yaml_differences(const std::string& old_yaml, const std::string& new_yaml) {
+  std::map<std::string, std::string> a, b;
+  flatten(YAML::Load(old_yaml), "", a);
+  flatten(YAML::Load(new_yaml), "", b);
+  std::string out;
+  int shown = 0;
+  auto show = [&](const std::string& k, const std::string& from, const std::string& to) {
+    if (shown++ < 4) out += (out.empty() ? "" : ", ") + k + " " + from + " -> " + to;
+  };
+  for (const auto& [k, v] : a) {
+    auto it = b.find(k);
+    if (it == b.end()) show(k, v, "(absent)");
+    else if (it->second != v) show(k, v, it->second);
+  }
+  for (const auto& [k, v] : b)
+    if (!a.count(k)) show(k, "(absent)", v);
+  if (shown > 4) out += " and " + std::to_string(shown - 4) + " more";
+  return out.empty() ? "nothing" : out;
 }
 
 std::string to_yaml_text(const Case& c) {

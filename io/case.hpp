@@ -46,6 +46,7 @@ struct RunCase {
 struct Case {
   std::string title;
   std::string source;  // the file it was read from
+  std::vector<std::string> overrides;  // the --set assignments applied to it (to print a restart command)
   ParticlesCase particles;
   std::optional<Vec3> box;  // given box, else derived from count and phi
   std::string flow = "simple_shear";
@@ -62,5 +63,13 @@ Case parse_case(const YAML::Node& root, const std::string& source);
 // The fully resolved case as YAML (every key, defaults filled in): printed by `suspend check`, stored in run.h5.
 YAML::Node to_yaml(const Case& c);
 std::string to_yaml_text(const Case& c);
+
+// What a run's results depend on: the resolved case less the thread count and the FCM cache folder (YAML text).
+// Two runs with the same identity give the same results (bit for bit on the same thread count).
+std::string result_identity(const Case& c);
+
+// The keys whose values differ between two YAML texts (dotted paths, "key old -> new", at most four named):
+// how refusals name what changed.
+std::string yaml_differences(const std::string& old_yaml, const std::string& new_yaml);
 
 }  // namespace suspend::io

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/case.hpp"
 #include "io/hdf5.hpp"
 
 namespace suspend::io {
@@ -80,9 +81,10 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     const hid_t id = f.id();
     if (!h5::exists(id, "particles/position") || h5::string_attribute(id, ".", "format") != format)
       throw InputError(path + ": not a suspend checkpoint");
-    if (h5::string_attribute(id, ".", "fingerprint") != fingerprint)
-      throw InputError(path + ": the checkpoint belongs to another case (particles, box, flow, contact, "
-                              "hydrodynamics, seed or time step differ); restart with the case it was written for");
+    const std::string stored = h5::string_attribute(id, ".", "fingerprint");
+    if (stored != fingerprint)
+      throw InputError(path + ": the checkpoint belongs to another case (" + yaml_differences(stored, fingerprint) +
+                       "); restart with the case and --set values it was written with");
     c.fingerprint = fingerprint;
     c.rng = h5::string_attribute(id, ".", "rng");
     c.threads = static_cast<int>(h5::int_attribute(id, ".", "threads"));

@@ -56,6 +56,20 @@ Snapshot snapshot_of(const Sim& sim) {
 }
 }  // namespace
 
+std::string restart_command(const Case& c, const std::string& checkpoint) {
+  // Single quotes keep YAML values ({from: file, ...}, 'text') intact in a POSIX shell.
+  auto quoted = [](const std::string& a) {
+    if (a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._/=+-") == std::string::npos)
+      return a;
+    std::string q = "'";
+    for (char ch : a) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    return q + "'";
+  };
+  std::string command = "suspend run " + quoted(c.source);
+  for (const std::string& o : c.overrides) command += " --set " + quoted(o);
+  return command + " --restart " + quoted(checkpoint);
+}
+
 void install_stop_handlers() {
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
@@ -154,6 +168,19 @@ int run_case(const Case& c, const RunOptions& o) {
       return summary;
     };
 
+    // A run that ends before run.strain (stopped, jammed, failed) still summarises what it did: from
+    // run.average_from, or from half its strain when it did not get there. Returns the window's start.
+    auto write_partial_summary = [&](const char* status, nlohmann::json extra) {
+      const double from = std::min(c.run.average_from, 0.5 * sim.state().strain);
+      extra["status"] = status;
+      try {
+        write_summary(from, extra);
+      } catch (const std::exception& e) {
+        std::cerr << "warning: no summary.json: " << e.what() << "\n";
+      }
+      return from;
+    };
+
     auto wall0 = std::chrono::steady_clock::now();
     install_stop_handlers();
     double stress_sum = 0.0, rate_sum = 0.0;  // running eta_r = <Sigma_xy> / <gammadot>
@@ -187,7 +214,11 @@ int run_case(const Case& c, const RunOptions& o) {
         }
         progress.update(strain, sim.state().step,
                         rate_sum != 0.0 ? stress_sum / rate_sum : sim.stress().total()(0, 1) / sim.shear_rate());
-        if (strain >= c.run.strain - eps) break;
+        if (strain >= c.run.strain - eps) {
+          if (file.snapshot_count() == 0 || file.snapshots().back().strain < strain - eps)
+            file.write_snapshot(snapshot_of(sim));  // the final state, also when run.strain is between snapshots
+          break;
+        }
 
         sim.advance();
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
@@ -195,8 +226,9 @@ int run_case(const Case& c, const RunOptions& o) {
           save();
           finish_outputs();
           progress.finish();
-          std::cerr << "stopped by signal " << sig << " at strain " << sim.state().strain << "; continue with: suspend run "
-                    << c.source << " --restart " << checkpoint_path << "\n";
+          write_partial_summary("stopped", {});
+          std::cerr << "stopped by signal " << sig << " at strain " << sim.state().strain
+                    << "; continue with: " << restart_command(c, checkpoint_path) << "\n";
           return 128 + sig;
         }
         if (c.simulation.control == FlowControl::stress) {
@@ -210,11 +242,10 @@ int run_case(const Case& c, const RunOptions& o) {
               save();
               finish_outputs();
               progress.finish();
-              const double from = std::min(c.run.average_from, 0.5 * st.strain);
-              write_summary(from, {{"status", "jammed"},
-                                   {"jammed", {{"mean_shear_rate", rate},
-                                               {"over_time", st.time - clock.jam_window_time},
-                                               {"threshold", c.simulation.shear_stress / c.run.jammed_viscosity}}}});
+              const double from = write_partial_summary(
+                  "jammed", {{"jammed", {{"mean_shear_rate", rate},
+                                         {"over_time", st.time - clock.jam_window_time},
+                                         {"threshold", c.simulation.shear_stress / c.run.jammed_viscosity}}}});
               std::fprintf(stderr,
                            "jammed: the mean shear rate was %.3g over the last %.4g time units (threshold "
                            "Sigma/run.jammed.viscosity = %.3g) at strain %.4g; summary.json averages from strain "
@@ -239,6 +270,7 @@ int run_case(const Case& c, const RunOptions& o) {
       file.write_snapshot(snapshot_of(sim));
       save();
       finish_outputs();
+      write_partial_summary("failed", {{"error", e.what()}});
       std::cerr << "error: " << e.what() << "\nthe last good state is in " << checkpoint_path << " and snapshot "
                 << file.snapshot_count() - 1 << " of " << run_path << "\n";
       return exit_numerical_error;
@@ -248,16 +280,18 @@ int run_case(const Case& c, const RunOptions& o) {
     finish_outputs();
     const nlohmann::json summary = write_summary(c.run.average_from, {{"status", "done"}});
     file.close();
-    const auto& eta = summary["eta_r"];
+    if (o.quiet) return 0;
+    // JSON has no NaN: an undefined mean or error (too few samples) is null there, nan here.
+    auto v = [&](const char* key, const char* part) {
+      const nlohmann::json& x = summary[key][part];
+      return x.is_number() ? x.get<double>() : std::nan("");
+    };
     if (summary.contains("sigma_star"))
-      std::printf("sigma* = %.5g +- %.2g   G_adh = %.4g +- %.2g\n", summary["sigma_star"]["mean"].get<double>(),
-                  summary["sigma_star"]["sem"].get<double>(), summary["G_adh"]["mean"].get<double>(),
-                  summary["G_adh"]["sem"].get<double>());
+      std::printf("sigma* = %.5g +- %.2g   G_adh = %.4g +- %.2g\n", v("sigma_star", "mean"), v("sigma_star", "sem"),
+                  v("G_adh", "mean"), v("G_adh", "sem"));
     std::printf("eta_r = %.5g +- %.2g   N1 = %.4g +- %.2g   N2 = %.4g +- %.2g   Pi = %.4g +- %.2g   (strain %.3g-%.3g, %zu samples)\n",
-                eta["mean"].get<double>(), eta["sem"].get<double>(), summary["N1"]["mean"].get<double>(),
-                summary["N1"]["sem"].get<double>(), summary["N2"]["mean"].get<double>(),
-                summary["N2"]["sem"].get<double>(), summary["Pi"]["mean"].get<double>(),
-                summary["Pi"]["sem"].get<double>(), c.run.average_from, sim.state().strain,
+                v("eta_r", "mean"), v("eta_r", "sem"), v("N1", "mean"), v("N1", "sem"), v("N2", "mean"),
+                v("N2", "sem"), v("Pi", "mean"), v("Pi", "sem"), c.run.average_from, sim.state().strain,
                 summary["samples"].get<std::size_t>());
     return 0;
   };

@@ -20,6 +20,9 @@ int run_case(const Case& c, const RunOptions& options);
 // The resolved physics of a case (everything but run length, output and threads): checkpoints must match it.
 std::string physics_fingerprint(const Case& c);
 
+// The command that continues a run from its checkpoint: the case file and its --set overrides, shell-quoted.
+std::string restart_command(const Case& c, const std::string& checkpoint);
+
 // Installs SIGINT/SIGTERM handlers that ask the running case to checkpoint and stop.
 void install_stop_handlers();
 

@@ -28,7 +28,8 @@ inline std::string scratch() {
   fs::create_directories(d);
   return d;
 }
-inline pid_t spawn(std::vector<std::string> args, const std::string& err_file, bool own_group = false) {
+inline pid_t spawn(std::vector<std::string> args, const std::string& err_file, bool own_group = false,
+                   const std::string& out_file = "/dev/null") {
   args.insert(args.begin(), suspend_bin);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
@@ -36,7 +37,7 @@ inline pid_t spawn(std::vector<std::string> args, const std::string& err_file, b
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
   posix_spawn_file_actions_addopen(&fa, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 1, out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawnattr_t attr;
   posix_spawnattr_init(&attr);
   if (own_group) {  // so that a test can kill the program and every process it started at once
@@ -57,14 +58,13 @@ inline int wait_exit(pid_t pid) {
 struct Result {
   int code;
   std::string err;
+  std::string out;
 };
+inline std::string read_text(const std::string& path);
 inline Result run(const std::vector<std::string>& args) {
-  const std::string err_file = scratch() + "/stderr.txt";
-  const int code = wait_exit(spawn(args, err_file));
-  std::ifstream in(err_file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return {code, s.str()};
+  const std::string err_file = scratch() + "/stderr.txt", out_file = scratch() + "/stdout.txt";
+  const int code = wait_exit(spawn(args, err_file, false, out_file));
+  return {code, read_text(err_file), read_text(out_file)};
 }
 inline std::string fresh_dir(const std::string& name) {
   const std::string d = scratch() + "/" + name;

@@ -127,7 +127,9 @@ TEST(Cli, KilledAndRestartedRunEndsBitIdentical) {
 
 TEST(Cli, InterruptWritesACheckpointAndStopsCleanly) {
   const std::string c = fresh_dir("interrupt");
-  const pid_t pid = spawn(with_lighter({"run", restart_case, "--out", c, "--threads", "1", "--quiet"}), c + ".err");
+  const pid_t pid = spawn(with_lighter({"run", restart_case, "--out", c, "--threads", "1", "--quiet", "--set",
+                                        "run.average_from=0.1"}),
+                          c + ".err");
   const auto t0 = std::chrono::steady_clock::now();
   while (!fs::exists(c + "/checkpoint.h5") && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(60))
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
@@ -139,8 +141,18 @@ TEST(Cli, InterruptWritesACheckpointAndStopsCleanly) {
   s << err.rdbuf();
   EXPECT_NE(s.str().find("--restart"), std::string::npos) << s.str();
   EXPECT_TRUE(fs::exists(c + "/run.xdmf"));
-  const Result r = run(with_lighter({"run", restart_case, "--restart", c + "/checkpoint.h5", "--threads", "1", "--quiet"}));
-  EXPECT_EQ(r.code, 0) << r.err;
+  // What it did is summarised, marked as stopped.
+  EXPECT_NE(read_text(c + "/summary.json").find("\"status\": \"stopped\""), std::string::npos);
+  // The printed command continues the run as it is: with its --set overrides.
+  const std::string said = s.str();
+  const auto at = said.find("continue with: suspend ");
+  ASSERT_NE(at, std::string::npos) << said;
+  const std::string command = said.substr(at + std::string("continue with: suspend ").size());
+  EXPECT_NE(command.find("--set run.average_from=0.1"), std::string::npos) << command;
+  const int continued = std::system((suspend_bin + " " + command.substr(0, command.find('\n')) +
+                                     " --threads 1 --quiet > /dev/null 2>&1").c_str());
+  EXPECT_EQ(continued, 0) << command;
+  EXPECT_NE(read_text(c + "/summary.json").find("\"status\": \"done\""), std::string::npos);
   EXPECT_TRUE(fs::exists(c + "/summary.json"));
 }
 
@@ -148,5 +160,41 @@ TEST(Cli, RestartFromAnotherCaseIsRefused) {
   const std::string c = fresh_dir("other_case");
   ASSERT_EQ(run({"run", restart_case, "--out", c, "--quiet", "--set", "run.strain=0.05", "--set", "run.average_from=0"}).code, 0);
   expect_input_error({"run", restart_case, "--restart", c + "/checkpoint.h5", "--set", "contact.mu=0.5"},
-                     "belongs to another case", "");
+                     "belongs to another case (contact.mu 1 -> 0.5)", "");
+}
+
+TEST(Cli, QuietPrintsNothingAndTheFinalStateIsASnapshot) {
+  // run.strain 0.3 is not a multiple of snapshot_every 0.25: the final state is a third snapshot all the same
+  // (the last step may still pass run.strain by a fraction of a step).
+  const std::string c = fresh_dir("quiet");
+  const Result r = run(with_lighter({"run", restart_case, "--out", c, "--quiet", "--set", "run.output.snapshot_every=0.25",
+                                     "--set", "run.strain=0.3"}));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, "") << "--quiet prints nothing";
+  EXPECT_EQ(r.err, "");
+  h5::File f = h5::File::open(c + "/run.h5", false);
+  ASSERT_TRUE(h5::exists(f.id(), "snapshots/000002"));
+  EXPECT_FALSE(h5::exists(f.id(), "snapshots/000003"));
+  h5::File cp = h5::File::open(c + "/checkpoint.h5", false);
+  EXPECT_EQ(h5::double_attribute(f.id(), "snapshots/000002", "strain"), h5::double_attribute(cp.id(), ".", "strain"));
+  EXPECT_NEAR(h5::double_attribute(f.id(), "snapshots/000002", "strain"), 0.3, 1e-3);
+  const std::string summary = read_text(c + "/summary.json");
+  EXPECT_NE(summary.find("\"status\": \"done\""), std::string::npos) << summary;
+}
+
+TEST(Cli, CrossvalRefusesAFolderOfAnotherCase) {
+  const std::string c = fresh_dir("crossval_other");
+  const std::vector<std::string> tiny = {"--set", "particles.count=20", "--set", "particles.phi=0.1", "--set",
+                                         "hydrodynamics.fcm.subgrid=false", "--set", "run.strain=0.02", "--set",
+                                         "run.average_from=0", "--quiet", "--threads", "1"};
+  std::vector<std::string> first = {"crossval", restart_case, "--out", c};
+  first.insert(first.end(), tiny.begin(), tiny.end());
+  const Result a = run(first);
+  ASSERT_EQ(a.code, 0) << a.err;
+  std::vector<std::string> other = first;
+  other.insert(other.end(), {"--set", "run.seed=5"});
+  const Result b = run(other);
+  EXPECT_EQ(b.code, 2) << b.err;
+  EXPECT_NE(b.err.find("holds a run of another case (run.seed 3 -> 5)"), std::string::npos) << b.err;
+  EXPECT_EQ(run(first).code, 0) << "the same case is reused";
 }
