@@ -36,6 +36,22 @@ std::string join(const fs::path& dir, const char* name) { return (dir / name).st
 // First multiple of `every` strictly above `strain`.
 double next_multiple(double strain, double every) { return (std::floor(strain / every + 1e-9) + 1.0) * every; }
 
+// A step that leaves a non-finite position, time or strain (e.g. a fixed time step far too large) is a numerical
+// failure, never a finished run.
+void check_finite(const SimulationState& st) {
+  if (!std::isfinite(st.time) || !std::isfinite(st.strain))
+    throw NumericalError("time or strain became non-finite at step " + std::to_string(st.step) +
+                         "; reduce run.time_step");
+  const auto& x = st.particles.position;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (!x[i].allFinite()) {
+      std::ostringstream s;
+      s << "position of particle " << i << " became non-finite at step " << st.step << " (strain " << st.strain
+        << "); reduce run.time_step";
+      throw NumericalError(s.str());
+    }
+}
+
 template <class Sim>
 Snapshot snapshot_of(const Sim& sim) {
   Snapshot s;
@@ -181,12 +197,33 @@ int run_case(const Case& c, const RunOptions& o) {
       return from;
     };
 
+    // The state at the start of this step and of the step before, as a checkpoint would hold them: on a
+    // numerical failure the checkpoint gets the state before the failing step (the failing one goes to run.h5 as
+    // the last snapshot, to look at). A copy per step: small beside the step itself.
+    struct StepStart {
+      SimulationState state;
+      OutputClock clock;
+      bool valid = false;
+    } this_step, previous_step;
+    bool evaluating = false;
+    auto remember_step_start = [&] {
+      std::swap(previous_step, this_step);
+      this_step.state = sim.state_with_contacts();
+      this_step.clock = clock;
+      this_step.clock.series_rows = static_cast<std::int64_t>(file.series_rows());
+      this_step.clock.snapshots = static_cast<std::int64_t>(file.snapshot_count());
+      this_step.valid = true;
+    };
+
     auto wall0 = std::chrono::steady_clock::now();
     install_stop_handlers();
     double stress_sum = 0.0, rate_sum = 0.0;  // running eta_r = <Sigma_xy> / <gammadot>
     try {
       for (;;) {
+        remember_step_start();
+        evaluating = true;
         sim.evaluate();
+        evaluating = false;
         const double strain = sim.state().strain;
         const double eps = 1e-9;
         if (strain >= clock.next_series - eps) {
@@ -221,6 +258,7 @@ int run_case(const Case& c, const RunOptions& o) {
         }
 
         sim.advance();
+        check_finite(sim.state());
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
         if (const int sig = stop_signal.load()) {
           save();
@@ -267,11 +305,15 @@ int run_case(const Case& c, const RunOptions& o) {
       }
     } catch (const NumericalError& e) {
       progress.finish();
+      // evaluate() found the state it was given bad: the step that made it is the failing one.
+      const StepStart& good = evaluating && previous_step.valid ? previous_step : this_step;
       file.write_snapshot(snapshot_of(sim));
-      save();
+      file.flush();
+      write_checkpoint(checkpoint_path, {good.state, good.clock, fingerprint, serialize(rng), threads});
       finish_outputs();
       write_partial_summary("failed", {{"error", e.what()}});
-      std::cerr << "error: " << e.what() << "\nthe last good state is in " << checkpoint_path << " and snapshot "
+      std::cerr << "error: " << e.what() << "\nthe state before the failing step (strain " << good.state.strain
+                << ", step " << good.state.step << ") is in " << checkpoint_path << "; the failing state is snapshot "
                 << file.snapshot_count() - 1 << " of " << run_path << "\n";
       return exit_numerical_error;
     }

@@ -198,3 +198,37 @@ TEST(Cli, CrossvalRefusesAFolderOfAnotherCase) {
   EXPECT_NE(b.err.find("holds a run of another case (run.seed 3 -> 5)"), std::string::npos) << b.err;
   EXPECT_EQ(run(first).code, 0) << "the same case is reused";
 }
+
+TEST(Cli, FailingRunKeepsTheStateBeforeTheFailingStep) {
+  // A fixed time step of 1e308 throws every particle to infinity in one step: a numerical failure (exit 3), never a
+  // finished run; the checkpoint holds the state before that step, which continues (and fails again) as it was.
+  const std::string c = fresh_dir("non_finite");
+  const std::vector<std::string> step = {"--set", "run.time_step={mode: fixed, fixed: 1.0e308}", "--quiet"};
+  std::vector<std::string> args = {"run", restart_case, "--out", c};
+  args.insert(args.end(), step.begin(), step.end());
+  const Result r = run(args);
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("became non-finite at step 1"), std::string::npos) << r.err;
+  EXPECT_NE(read_text(c + "/summary.json").find("\"status\": \"failed\""), std::string::npos);
+  {
+    h5::File cp = h5::File::open(c + "/checkpoint.h5", false);
+    EXPECT_EQ(h5::int_attribute(cp.id(), ".", "step"), 0);
+  }
+  std::vector<std::string> again = {"run", restart_case, "--restart", c + "/checkpoint.h5"};
+  again.insert(again.end(), step.begin(), step.end());
+  const Result r2 = run(again);
+  EXPECT_EQ(r2.code, 3) << "the checkpoint is readable and finite: " << r2.err;
+}
+
+TEST(Cli, RunawayOverlapKeepsTheStateOfTheStepBefore) {
+  // The overlap bound is checked when a configuration is evaluated: the step that produced the overlap is the
+  // failing one, so the checkpoint holds the configuration one step before the failing snapshot.
+  const std::string c = fresh_dir("overlap");
+  const Result r = run({"run", restart_case, "--out", c, "--quiet", "--set", "run.max_overlap=1e-4"});
+  ASSERT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("exceeds the bound"), std::string::npos) << r.err;
+  h5::File f = h5::File::open(c + "/run.h5", false), cp = h5::File::open(c + "/checkpoint.h5", false);
+  const std::int64_t failing = h5::int_attribute(f.id(), "snapshots/000001", "step");
+  EXPECT_GT(failing, 1);
+  EXPECT_EQ(h5::int_attribute(cp.id(), ".", "step"), failing - 1);
+}
