@@ -1,6 +1,8 @@
 // `suspend mobility`: one FCM mobility solve for a sphere (or the spheres of a file) in a periodic box.
 // Prints velocities, angular velocities and stresslets (eta = 1, lengths in the units of the input), and for a
 // single sphere the drag ratio 6 pi eta a U.F / |F|^2 that Hasimoto's expansion predicts (docs/fcm.md).
+#include <unistd.h>
+
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -34,6 +36,8 @@ struct MobilityArgs {
 
 Vec3 vec3_of(const std::vector<double>& v, const char* name) {
   if (v.size() != 3) throw InputError(std::string("--") + name + " needs three comma-separated numbers");
+  for (double x : v)
+    if (!std::isfinite(x)) throw InputError(std::string("--") + name + " needs three finite numbers");
   return {v[0], v[1], v[2]};
 }
 
@@ -43,9 +47,20 @@ nlohmann::json json_of(const Mat3& m) {
 }
 
 void run_mobility(const MobilityArgs& args) {
-  if (!(args.box > 0.0)) throw InputError("--box must be positive");
-  if (args.grid < 8) throw InputError("--grid must be at least 8");
-  if (!(args.radius > 0.0)) throw InputError("--radius must be positive");
+  if (!(args.box > 0.0) || !std::isfinite(args.box)) throw InputError("--box must be a positive number");
+  if (args.grid < 8 || args.grid > 1024) throw InputError("--grid must be between 8 and 1024 nodes per side");
+  // Three grids of doubles and their transforms, and the envelopes' tables: about 100 bytes a node.
+  const double bytes = 100.0 * std::pow(static_cast<double>(args.grid), 3);
+  const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+  if (memory > 0.0 && bytes > 0.8 * memory)
+    throw InputError("--grid " + std::to_string(args.grid) + ": needs about " + std::to_string(bytes / 1e9).substr(0, 5) +
+                     " GB, more than this machine's memory allows");
+  const double h = args.box / args.grid;
+  if (!(args.radius >= 0.5 * h) || !(args.radius <= 0.25 * args.box))
+    throw InputError("--radius must be between h/2 = " + std::to_string(0.5 * h) + " (the FCM envelopes must span grid "
+                     "nodes; paper 004 uses h = a/2) and a quarter of --box");
+  for (double v : {args.shear_rate, args.shear_offset})
+    if (!std::isfinite(v)) throw InputError("--shear-rate and --shear-offset must be finite numbers");
   std::vector<Vec3> pos;
   std::vector<double> rad;
   if (args.positions_file.empty()) {

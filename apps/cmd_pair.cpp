@@ -3,6 +3,7 @@
 // table (tests/data/two_sphere_resistance_table.txt) or to choose cutoffs.
 #include <CLI/CLI.hpp>
 #include <array>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -42,6 +43,11 @@ void check(const PairOptions& o) {
   require(std::isfinite(o.regularization) && o.regularization >= 0.0,
           "--regularization = " + str(o.regularization) + ": must be >= 0");
   require(o.gap > 0.0 || o.regularization > 0.0, "--gap = 0 needs --regularization > 0 (lubrication is singular)");
+  require(o.a2 / o.a1 >= 1e-2 && o.a2 / o.a1 <= 1e2,
+          "--a2 / --a1 = " + str(o.a2 / o.a1) + ": the size ratio must be between 0.01 and 100");
+  require(o.gap <= 1e6 * std::min(o.a1, o.a2), "--gap = " + str(o.gap) + ": at most 1e6 radii");
+  require(o.outer_cutoff == -1.0 || (std::isfinite(o.outer_cutoff) && o.outer_cutoff > 0.0),
+          "--outer-cutoff = " + str(o.outer_cutoff) + ": the surface gap beyond which lubrication is zero must be > 0");
 }
 
 void run_pair(const PairOptions& o) {

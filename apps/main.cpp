@@ -18,6 +18,17 @@ int main(int argc, char** argv) {
   suspend::app::add_check_command(app);
   suspend::app::add_pair_command(app);
   suspend::app::add_mobility_command(app);
+  // CLI11 would say "a subcommand is required" for `suspend --bogus`: name the option instead.
+  if (argc > 1 && argv[1][0] == '-') {
+    const std::string first = argv[1];
+    if (first != "--help" && first != "-h" && first != "--version") {
+      std::cerr << "error: " << first << ": unknown option; suspend takes a subcommand first (";
+      for (std::size_t k = 0; k < app.get_subcommands({}).size(); ++k)
+        std::cerr << (k ? ", " : "") << app.get_subcommands({})[k]->get_name();
+      std::cerr << "; see suspend --help)\n";
+      return suspend::exit_input_error;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -71,6 +71,7 @@ TEST(Cli, BadInputExitsWithTwoAndWritesNothing) {
                      "holds 2 YAML documents", out);
   expect_input_error({"run", scratch(), "--out", out}, "is a directory", out);
   expect_input_error({"run", "/dev/null", "--out", out}, "not a regular file", out);
+  expect_input_error({"--bogus"}, "--bogus: unknown option; suspend takes a subcommand first (run,", "");
 }
 
 TEST(Cli, CheckPrintsTheResolvedCaseWithDerivedValues) {

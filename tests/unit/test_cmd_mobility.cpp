@@ -39,7 +39,8 @@ TEST(CmdMobility, JsonDragRatioOfOneSphere) {
 }
 
 TEST(CmdMobility, BadInputGivesOneLineAndExitCodeTwo) {
-  for (const char* args : {"--force 1,2", "--box -3", "--positions /no/such/file", "--box 4 --grid 8"}) {
+  for (const char* args : {"--force 1,2", "--box -3", "--positions /no/such/file", "--box 4 --grid 8",
+                           "--force nan,0,0", "--radius 1e-6", "--grid 100000", "--shear-rate inf"}) {
     const CommandRun r = run_mobility(args);
     EXPECT_EQ(r.code, 2) << args;
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;

@@ -53,7 +53,10 @@ TEST(PairCommand, OuterCutoffLeavesStokesDrag) {
 }
 
 TEST(PairCommand, BadInputIsOneLineAndExitCode2) {
-  for (const char* args : {"--a1 -1 --a2 1 --gap 0.1", "--a1 1 --a2 1 --gap -0.1", "--a1 1 --a2 1 --gap 0"}) {
+  for (const char* args : {"--a1 -1 --a2 1 --gap 0.1", "--a1 1 --a2 1 --gap -0.1", "--a1 1 --a2 1 --gap 0",
+                           "--a1 1e-300 --a2 1 --gap 0.1", "--a1 1 --a2 1 --gap 0.1 --outer-cutoff 0",
+                           "--a1 1 --a2 1 --gap 0.1 --outer-cutoff -2", "--a1 1 --a2 1 --gap 0.1 --outer-cutoff nan",
+                           "--a1 nan --a2 1 --gap 0.1"}) {
     const Result r = run(args);
     EXPECT_EQ(r.exit_code, 2) << args;
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
