@@ -5,11 +5,15 @@ import os
 import sys
 import xml.etree.ElementTree as ET
 
-import h5py
+from debian_python import require
 
 
 def main(path):
-    root = ET.parse(path).getroot()
+    import h5py
+    try:
+        root = ET.parse(path).getroot()
+    except (OSError, ET.ParseError) as e:
+        return f"{path}: {e}"
     if root.tag != "Xdmf":
         return f"{path}: root element is {root.tag}, not Xdmf"
     base = os.path.dirname(os.path.abspath(path))
@@ -34,6 +38,13 @@ def main(path):
 
 
 if __name__ == "__main__":
+    if len(sys.argv) != 2 or sys.argv[1] in ("-h", "--help"):
+        print("usage: tools/check_xdmf.py RUN_DIR/run.xdmf", file=sys.stderr)
+        sys.exit(2)
+    if not os.path.isfile(sys.argv[1]):
+        print(f"error: {sys.argv[1]}: no such file", file=sys.stderr)
+        sys.exit(2)
+    require("h5py")
     error = main(sys.argv[1])
     if error:
         print(error, file=sys.stderr)

@@ -20,7 +20,7 @@ import math
 import os
 import sys
 
-import h5py
+from debian_python import require
 
 XI = (0.01, 0.02, 0.05, 0.1)
 
@@ -75,6 +75,7 @@ def repulsion_of(case_text):
 
 def measured_squeeze(run_h5):
     """(xi, 2 F / (6 pi u)) from the snapshots of one run, sorted by xi."""
+    import h5py
     os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")
     points = []
     with h5py.File(run_h5, "r") as f:
@@ -105,17 +106,27 @@ def main(argv):
     tolerance = 0.03
     dirs = []
     i = 0
-    while i < len(args):
-        if args[i] == "--table":
-            table, i = args[i + 1], i + 2
-        elif args[i] == "--tolerance":
-            tolerance, i = float(args[i + 1]), i + 2
-        else:
-            dirs.append(args[i])
-            i += 1
+    try:
+        while i < len(args):
+            if args[i] in ("-h", "--help"):
+                raise ValueError
+            if args[i] == "--table":
+                table, i = args[i + 1], i + 2
+            elif args[i] == "--tolerance":
+                tolerance, i = float(args[i + 1]), i + 2
+            else:
+                dirs.append(args[i])
+                i += 1
+    except (IndexError, ValueError):
+        dirs = []
     if len(dirs) != 1:
-        print(__doc__, file=sys.stderr)
+        print(__doc__.split("\n\n")[1], file=sys.stderr)
         return 2
+    for m in ("pairwise", "fcm"):
+        if not os.path.isfile(os.path.join(dirs[0], m, "run.h5")):
+            print(f"error: {os.path.join(dirs[0], m, 'run.h5')} not found (run suspend crossval first)", file=sys.stderr)
+            return 2
+    require("h5py")
     exact = exact_squeeze(table)
     runs = {m: measured_squeeze(os.path.join(dirs[0], m, "run.h5")) for m in ("pairwise", "fcm")}
     ok = True

@@ -13,6 +13,8 @@ import math
 import os
 import sys
 
+from debian_python import require
+
 PAPER_NON_ADHESIVE = {0.0: 0.651, 0.1: 0.632, 0.5: 0.592}  # paper 004 Fig. 15 (FDM)
 METHOD_STYLE = {"pairwise": dict(marker="o", linestyle="-", fillstyle="full"),
                 "fcm": dict(marker="s", linestyle="--", fillstyle="none")}
@@ -219,12 +221,9 @@ def main(argv):
     results = args[0]
     if not os.path.isdir(results):
         usage("'%s' is not a folder" % results)
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import numpy  # noqa: F401
-    except ImportError as e:
-        usage("%s: run with Debian's /usr/bin/python3 (python3-matplotlib, python3-numpy)" % e)
+    require("matplotlib", "numpy")
+    import matplotlib
+    matplotlib.use("Agg")
     methods = load(results)
     if not methods:
         usage("no METHOD/campaign.json with METHOD/phim.json under '%s' (run suspend sweep, then suspend phim)" % results)

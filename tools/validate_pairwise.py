@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Compare pairwise-engine runs with the published fits (stdlib only).
 
 usage: validate_pairwise.py frictionless DIR_phi1 DIR_phi2 ... [--tolerance 0.2]
@@ -16,17 +16,25 @@ FITS = {  # Mari et al. 2014, via paper 000 Fig. 7
 
 
 def load(d):
-    with open(d + "/summary.json") as f:
-        return json.load(f)
+    try:
+        with open(d + "/summary.json") as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        sys.exit(f"error: {d}/summary.json: {e}")
 
 
 def main(argv):
+    if len(argv) < 3 or argv[1] not in ("frictionless", "frictional", "thickening"):
+        print(__doc__.split("\n\n")[1].split("\nEach")[0], file=sys.stderr)
+        return 2
     kind, rest = argv[1], argv[2:]
     opts = {"--tolerance": None, "--factor": "3"}
     dirs = []
     i = 0
     while i < len(rest):
         if rest[i] in opts:
+            if i + 1 >= len(rest):
+                sys.exit(f"error: {rest[i]} needs a value")
             opts[rest[i]] = rest[i + 1]
             i += 2
         else:
