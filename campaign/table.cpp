@@ -117,10 +117,15 @@ std::string table_csv(const Campaign& c, const json& table) {
         out << ",,";
       }
     }
+    // Z = 2 contacts / particles (summaries written before contacts_per_particle existed: from contacts)
     const double n = s["particles"].get<double>();
-    const json& z = s["contacts"];
-    number(z["mean"].is_number() ? json(z["mean"].get<double>() / n) : json());
-    number(z["sem"].is_number() ? json(z["sem"].get<double>() / n) : json());
+    const json& pairs = s["contacts"];
+    const json z = s.contains("contacts_per_particle")
+                       ? s["contacts_per_particle"]
+                       : json{{"mean", pairs["mean"].is_number() ? json(2.0 * pairs["mean"].get<double>() / n) : json()},
+                              {"sem", pairs["sem"].is_number() ? json(2.0 * pairs["sem"].get<double>() / n) : json()}};
+    number(z["mean"]);
+    number(z["sem"]);
     number(s["window"]["from_strain"]);
     number(s["window"]["to_strain"]);
     number(e["wall_seconds"]);

@@ -1,5 +1,6 @@
 #include "io/summary.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -66,7 +67,11 @@ nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
   std::vector<double> contacts = read_series(f, "contacts"), overlap = read_series(f, "max_overlap");
   std::vector<double> wc, wo;
   for (std::size_t r : window) wc.push_back(contacts[r]), wo.push_back(overlap[r]);
-  j["contacts"] = entry(block_average(wc));
+  const MeanWithError z = block_average(wc);
+  j["contacts"] = entry(z);
+  const double n = static_cast<double>(std::max<std::size_t>(ctx.particles, 1));
+  // Z, the mean number of contacts of a particle: every contact (pair) touches two particles.
+  j["contacts_per_particle"] = entry({2.0 * z.mean / n, 2.0 * z.sem / n});
   j["max_overlap"] = entry(block_average(wo));
   if (ctx.adhesion_force > 0.0) {
     // Paper 004: sigma* = 6 pi Sigma_xy a_1^2 / F_adh, G_adh = F_adh / (6 pi eta_0 a_1^2 gammadot).
