@@ -81,12 +81,17 @@ TEST(Phim, GroupsByMuAndSigmaStarFlagsJammedPointsAndInterpolatesRateControl) {
   json table;
   table["points"] = json::array();
   int n = 0;
+  auto name = [](char prefix, int k) {  // (not "s" + std::to_string(k): a GCC 12 -Wrestrict false positive)
+    std::string s(1, prefix);
+    s += std::to_string(k);
+    return s;
+  };
   // Imposed stress: sigma* = Sigma / G_adh = 2 (one group even with two G_adh), and the non-adhesive limit.
   for (double phi : {0.40, 0.44, 0.48, 0.52}) {
     const double g = n++ % 2 ? 1.0 : 2.0;
-    table["points"].push_back(point("s" + std::to_string(n), "done", "stress", 0.5, g, 2.0 * g, phi,
+    table["points"].push_back(point(name('s', n), "done", "stress", 0.5, g, 2.0 * g, phi,
                                     maron_pierce(phi, 0.9, 0.55), 2.0));
-    table["points"].push_back(point("n" + std::to_string(n), "done", "stress", 0.5, 0.0, 10.0, phi + 0.04,
+    table["points"].push_back(point(name('n', n), "done", "stress", 0.5, 0.0, 10.0, phi + 0.04,
                                     maron_pierce(phi + 0.04, 0.8, 0.60), 0.0));
   }
   table["points"].push_back(point("j1", "jammed", "stress", 0.5, 1.0, 2.0, 0.50, 0.0, 0.0));  // below 0.55: flagged
