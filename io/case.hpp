@@ -40,7 +40,7 @@ struct RunCase {
   // Imposed stress only: the run ends as jammed when, over a time in which a suspension of viscosity
   // jammed_viscosity would shear by jammed_strain, it sheared by less (mean rate below Sigma / jammed_viscosity).
   double jammed_viscosity = 1.0e3;
-  double jammed_strain = 0.05;
+  double jammed_strain = 0.5;
 };
 
 struct Case {
