@@ -1,9 +1,12 @@
 #include "io/checkpoint.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "core/rng.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case.hpp"
 #include "io/hdf5.hpp"
@@ -12,6 +15,24 @@ namespace suspend::io {
 
 namespace {
 constexpr const char* format = "suspend-checkpoint-1";
+
+// FNV-1a over the root attributes (text, then the bytes of every number, in a fixed order): stored in a dataset,
+// which carries a Fletcher32 checksum like every dataset, so that a flipped bit in an attribute is found too.
+std::int64_t attribute_checksum(const Checkpoint& c) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto bytes = [&](const void* data, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t k = 0; k < n; ++k) h = (h ^ b[k]) * 1099511628211ull;
+  };
+  for (const std::string* t : {&c.fingerprint, &c.rng}) bytes(t->data(), t->size());
+  const std::int64_t ints[] = {c.threads, c.state.step, c.clock.series_rows, c.clock.snapshots};
+  const double reals[] = {c.state.time,           c.state.strain,          c.state.last_dt,
+                          c.state.shear_rate,     c.clock.next_series,     c.clock.next_snapshot,
+                          c.clock.next_checkpoint, c.clock.jam_window_time, c.clock.jam_window_strain};
+  bytes(ints, sizeof ints);
+  bytes(reals, sizeof reals);
+  return static_cast<std::int64_t>(h);
+}
 
 std::vector<double> flatten(const std::vector<Vec3>& v) {
   std::vector<double> out(3 * v.size());
@@ -70,6 +91,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
     h5::set_attribute(id, ".", "snapshots", c.clock.snapshots);
     h5::set_attribute(id, ".", "jam_window_time", c.clock.jam_window_time);
     h5::set_attribute(id, ".", "jam_window_strain", c.clock.jam_window_strain);
+    h5::write(id, "checksums/attributes", std::vector<std::int64_t>{attribute_checksum(c)}, {1});
     f.flush();
   });
 }
@@ -105,6 +127,16 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     for (double v : {c.state.time, c.state.strain, c.state.last_dt, c.state.shear_rate, c.clock.next_series, c.clock.next_snapshot, c.clock.next_checkpoint,
                      c.clock.jam_window_time, c.clock.jam_window_strain})
       if (!std::isfinite(v)) throw InputError(path + ": time, strain or output clock is not finite");
+    if (h5::exists(id, "checksums/attributes") &&  // absent in checkpoints written before it existed
+        h5::read_ints(id, "checksums/attributes") != std::vector<std::int64_t>{attribute_checksum(c)})
+      throw InputError(path + ": corrupt checkpoint (its attributes do not match their checksum)");
+    if (c.state.step < 0 || c.clock.series_rows < 0 || c.clock.snapshots < 0 || c.threads < 1)
+      throw InputError(path + ": corrupt checkpoint (negative step, row or snapshot count, or no threads)");
+    {
+      Rng probe;
+      std::istringstream in(c.rng);
+      if (!(in >> probe)) throw InputError(path + ": corrupt checkpoint (unreadable random-number state)");
+    }
     Particles& p = c.state.particles;
     p.radius = h5::read_doubles(id, "particles/radius");
     const std::size_t n = p.radius.size();
@@ -116,6 +148,8 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     p.angular_velocity = unflatten(h5::read_doubles(id, "particles/angular_velocity"), n, "angular velocity");
     const std::vector<std::int64_t> species = h5::read_ints(id, "particles/species");
     if (species.size() != n) throw InputError(path + ": particles/species has the wrong size");
+    for (std::int64_t k : species)
+      if (k < 0 || k > 1'000'000) throw InputError(path + ": particles/species holds " + std::to_string(k));
     p.species.assign(species.begin(), species.end());
     c.state.warm_start = h5::read_doubles(id, "solver/warm_start");
     const std::size_t warm = c.state.warm_start.size();

@@ -30,7 +30,14 @@ void write_any(hid_t loc, const std::string& name, const std::vector<T>& data, c
   Handle space = dataspace(shape);
   Handle lcpl(check(H5Pcreate(H5P_LINK_CREATE), "plist"), H5Pclose);
   H5Pset_create_intermediate_group(lcpl.id(), 1);
-  Handle set(check(H5Dcreate2(loc, name.c_str(), type, space.id(), lcpl.id(), H5P_DEFAULT, H5P_DEFAULT),
+  // Every non-empty dataset carries a Fletcher32 checksum (one chunk, the whole dataset): a flipped bit is a read
+  // error, not a silently different restart.
+  Handle dcpl(check(H5Pcreate(H5P_DATASET_CREATE), "plist"), H5Pclose);
+  if (n > 0 && !shape.empty()) {
+    check_status(H5Pset_chunk(dcpl.id(), static_cast<int>(shape.size()), shape.data()), "chunk " + name);
+    check_status(H5Pset_fletcher32(dcpl.id()), "checksum " + name);
+  }
+  Handle set(check(H5Dcreate2(loc, name.c_str(), type, space.id(), lcpl.id(), dcpl.id(), H5P_DEFAULT),
                    "create dataset " + name),
              H5Dclose);
   if (n > 0) check_status(H5Dwrite(set.id(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write " + name);

@@ -127,6 +127,11 @@ int run_case(const Case& c, const RunOptions& o) {
     Checkpoint cp = read_checkpoint(o.restart, fingerprint);
     if (!fs::is_regular_file(dir / "run.h5"))
       throw InputError("--restart: " + join(dir, "run.h5") + " is missing; the checkpoint continues that file");
+    for (std::size_t i = 0; i < cp.state.particles.size(); ++i)
+      if (static_cast<std::size_t>(cp.state.particles.species[i]) >= c.particles.species.size())
+        throw InputError("--restart: " + o.restart + ": particle " + std::to_string(i) + " is of species " +
+                         std::to_string(cp.state.particles.species[i]) + ", the case has " +
+                         std::to_string(c.particles.species.size()));
     state = std::move(cp.state);
     clock = cp.clock;
     rng = deserialize_rng(cp.rng);

@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "core/error.hpp"
+#include "core/rng.hpp"
 #include "io/checkpoint.hpp"
 #include "io/run_file.hpp"
 #include "io/xdmf.hpp"
@@ -114,7 +115,7 @@ TEST(Checkpoint, RoundTripIsBitExact) {
   c.state.step = 12345;
   c.clock = {0.67, 1.0, 1.5, 67, 1};
   c.fingerprint = "physics";
-  c.rng = "123 456";
+  c.rng = serialize(Rng(123456));
   c.threads = 2;
   write_checkpoint(path, c);
   EXPECT_FALSE(std::filesystem::exists(path + ".tmp." + std::to_string(getpid())));
@@ -122,7 +123,7 @@ TEST(Checkpoint, RoundTripIsBitExact) {
   EXPECT_EQ(d.state.step, 12345);
   EXPECT_EQ(d.state.strain, c.state.strain);
   EXPECT_EQ(d.clock.series_rows, 67);
-  EXPECT_EQ(d.rng, "123 456");
+  EXPECT_EQ(d.rng, c.rng);
   for (std::size_t i = 0; i < 5; ++i) {
     EXPECT_EQ(d.state.particles.position[i], c.state.particles.position[i]);
     EXPECT_EQ(d.state.particles.velocity[i], c.state.particles.velocity[i]);
@@ -135,6 +136,7 @@ TEST(Checkpoint, RefusesOtherCaseCorruptFileAndNaN) {
   Checkpoint c;
   c.state.particles = some_particles(3);
   c.fingerprint = "case A";
+  c.rng = serialize(Rng(1));
   write_checkpoint(path, c);
   try {
     read_checkpoint(path, "case B");
@@ -176,4 +178,49 @@ TEST(Xdmf, EveryReferencedDatasetExists) {
     EXPECT_TRUE(h5::exists(f.id(), (*it)[1].str())) << (*it)[1].str();
   EXPECT_EQ(count, 2 * 4);  // position, radius, velocity, angular_velocity per snapshot
   EXPECT_NE(x.find("<Time Value=\"0.5\"/>"), std::string::npos);
+}
+
+TEST(Checkpoint, FlippedBitsAreRefusedNeverSilentlyRead) {
+  // Every dataset carries a Fletcher32 checksum and the attributes a checksum of their own: a single flipped bit
+  // anywhere in the file either makes the checkpoint unreadable (InputError) or leaves what is read unchanged
+  // (padding, unused metadata); it never changes the state that a run would continue from.
+  const std::string path = temp("flip_original.h5"), flipped = temp("flip.h5");
+  Checkpoint c;
+  c.state.particles = some_particles(6);
+  c.state.time = 0.25;
+  c.state.strain = 0.5;
+  c.state.step = 321;
+  c.clock = {0.51, 1.0, 1.0, 51, 1};
+  c.fingerprint = "physics";
+  c.rng = serialize(Rng(99));
+  c.state.warm_start.assign(36, 0.125);
+  write_checkpoint(path, c);
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const Checkpoint original = read_checkpoint(path, "physics");
+  Rng rng(2024);
+  int refused = 0, unchanged = 0, silently_changed = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::string b = bytes;
+    const std::size_t at = rng() % b.size();
+    b[at] = static_cast<char>(b[at] ^ (1 << (rng() % 8)));
+    std::ofstream(flipped, std::ios::binary | std::ios::trunc) << b;
+    try {
+      const Checkpoint d = read_checkpoint(flipped, "physics");
+      const bool same = d.state.step == original.state.step && d.state.time == original.state.time &&
+                        d.state.strain == original.state.strain && d.rng == original.rng &&
+                        d.clock.series_rows == original.clock.series_rows &&
+                        d.clock.next_series == original.clock.next_series &&
+                        d.state.particles.position == original.state.particles.position &&
+                        d.state.particles.velocity == original.state.particles.velocity &&
+                        d.state.particles.radius == original.state.particles.radius &&
+                        d.state.particles.species == original.state.particles.species &&
+                        d.state.warm_start == original.state.warm_start;
+      (same ? unchanged : silently_changed) += 1;
+    } catch (const InputError&) {
+      ++refused;
+    }
+  }
+  EXPECT_EQ(silently_changed, 0) << refused << " refused, " << unchanged << " unchanged";
+  EXPECT_GT(refused, 30);
 }
