@@ -4,6 +4,7 @@
 
 #include "apps/commands.hpp"
 #include "io/case.hpp"
+#include "io/exact_tables.hpp"
 #include "io/initial_configuration.hpp"
 
 namespace suspend::app {
@@ -21,6 +22,7 @@ void add_check_command(CLI::App& app) {
     const io::Case c = io::load_case(opt->case_file, opt->overrides);
     std::cout << "# " << c.source << ": valid\n" << io::to_yaml_text(c) << "\n";
     std::cout << "# derived\n";
+    for (const std::string& note : io::exact_table_notes(c)) std::cout << "# note: " << note << "\n";
     if (c.particles.initial == "random") {
       const io::Composition k = io::composition_of(c);
       std::cout << "particles: " << k.radius.size() << "  # per species:";

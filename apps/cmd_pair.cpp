@@ -1,6 +1,11 @@
-// `suspend pair`: print the two-sphere resistance functions of the pairwise model (Stokes drag + lubrication) in the
-// normalisation of Kim & Karrila / Jeffrey & Onishi (dem/hydro/resistance_functions.hpp), to compare with the exact
-// table (tests/data/two_sphere_resistance_table.txt) or to choose cutoffs.
+// `suspend pair`: print two-sphere resistance functions (Stokes drag included) in the normalisation of Kim & Karrila /
+// Jeffrey & Onishi (dem/hydro/resistance_functions.hpp), seen from sphere 1, to compare with the exact tables
+// (tests/data/two_sphere_resistance_table*.txt) or to choose cutoffs. --functions:
+//   singular        the pairwise model's default: drag + the terms singular at contact;
+//   exact_relative  the pairwise option of that name (dem/hydro/exact_relative.hpp): exact for relative motion and
+//                   rotation, rigid translation of the pair force-free, so X11A + X12A = 1 and Y11A + Y12A = 1;
+//   exact           the exact two-sphere functions (what FCM + sub-grid correction reproduces).
+// The last two need an exact table for a2/a1 (1, 1.4, 1/1.4; dem/hydro/exact_remainder.hpp).
 #include <CLI/CLI.hpp>
 #include <array>
 #include <algorithm>
@@ -13,6 +18,8 @@
 
 #include "apps/commands.hpp"
 #include "core/error.hpp"
+#include "dem/hydro/exact_relative.hpp"
+#include "dem/hydro/exact_remainder.hpp"
 #include "dem/hydro/resistance_functions.hpp"
 
 namespace suspend::app {
@@ -25,6 +32,7 @@ struct PairOptions {
   bool json = false;
   double regularization = 0.0;
   double outer_cutoff = -1.0;  // none
+  std::string functions = "singular";
 };
 
 std::string str(double v) {
@@ -48,15 +56,50 @@ void check(const PairOptions& o) {
   require(o.gap <= 1e6 * std::min(o.a1, o.a2), "--gap = " + str(o.gap) + ": at most 1e6 radii");
   require(o.outer_cutoff == -1.0 || (std::isfinite(o.outer_cutoff) && o.outer_cutoff > 0.0),
           "--outer-cutoff = " + str(o.outer_cutoff) + ": the surface gap beyond which lubrication is zero must be > 0");
+  if (o.functions == "singular") return;
+  require(hydro::ExactRemainder::for_ratio(o.a2 / o.a1) != nullptr,
+          "--functions " + o.functions + ": no exact two-sphere table for a2/a1 = " + str(o.a2 / o.a1) +
+              " (shipped for " + hydro::ExactRemainder::shipped_ratios() + "); use --functions singular");
+  require(2.0 * o.gap / (o.a1 + o.a2) + o.regularization <= 2.5,
+          "--gap = " + str(o.gap) + ": the exact tables end at xi = 2(gap)/(a1 + a2) = 2.5");
+}
+
+// Drag + singular terms + the tabulated remainder, seen from 1 (lambda) and from 2 (1/lambda, in a2 units).
+void exact_functions(double lambda, double xi, hydro::ResistanceScalars& from_1, hydro::ResistanceScalars& from_2) {
+  from_1 = hydro::lubrication_scalars(hydro::LubricationCoefficients::for_ratio(lambda), xi);
+  from_2 = hydro::lubrication_scalars(hydro::LubricationCoefficients::for_ratio(1.0 / lambda), xi);
+  hydro::add_stokes_drag(from_1);
+  hydro::add_stokes_drag(from_2);
+  hydro::ExactRemainder::for_ratio(lambda)->add_to(xi, from_1);
+  hydro::ExactRemainder::for_ratio(1.0 / lambda)->add_to(xi, from_2);
+}
+
+hydro::ResistanceScalars pair_functions(const PairOptions& o) {
+  hydro::TwoSphereOptions opt;
+  opt.regularization = o.regularization;
+  opt.outer_cutoff = o.outer_cutoff;
+  hydro::ResistanceScalars s = hydro::two_sphere_resistance(o.a1, o.a2, o.gap, opt);  // singular
+  if (o.functions == "singular" || (o.outer_cutoff >= 0.0 && o.gap > o.outer_cutoff)) return s;
+  const double xi = 2.0 * o.gap / (o.a1 + o.a2) + o.regularization;
+  hydro::ResistanceScalars exact_1, exact_2;
+  exact_functions(o.a2 / o.a1, xi, exact_1, exact_2);
+  if (o.functions == "exact") {
+    exact_1.xi = s.xi;
+    return exact_1;
+  }
+  const hydro::LubricationCoefficients c1 = hydro::LubricationCoefficients::for_ratio(o.a2 / o.a1);
+  hydro::ResistanceScalars lub_1 = hydro::lubrication_scalars(c1, xi);
+  hydro::ResistanceScalars lub_2 = hydro::lubrication_scalars(hydro::LubricationCoefficients::for_ratio(o.a1 / o.a2), xi);
+  hydro::exact_relative_part(o.a1, o.a2, exact_1, exact_2, lub_1, lub_2);
+  hydro::add_stokes_drag(lub_1);
+  lub_1.xi = s.xi;
+  return lub_1;
 }
 
 void run_pair(const PairOptions& o) {
   check(o);
-  hydro::TwoSphereOptions opt;
-  opt.regularization = o.regularization;
-  opt.outer_cutoff = o.outer_cutoff;
-  const hydro::ResistanceScalars s = hydro::two_sphere_resistance(o.a1, o.a2, o.gap, opt);
-  const std::array<std::pair<const char*, double>, 16> values = {{{"xi", s.xi},
+  const hydro::ResistanceScalars s = pair_functions(o);
+  const std::array<std::pair<const char*, double>, 17> values = {{{"xi", s.xi},
                                                                    {"X11A", s.x11a},
                                                                    {"X12A", s.x12a},
                                                                    {"Y11A", s.y11a},
@@ -64,6 +107,7 @@ void run_pair(const PairOptions& o) {
                                                                    {"Y11B", s.y11b},
                                                                    {"Y12B", s.y12b},
                                                                    {"X11C", s.x11c},
+                                                                   {"X12C", s.x12c},
                                                                    {"Y11C", s.y11c},
                                                                    {"Y12C", s.y12c},
                                                                    {"X11G", s.x11g},
@@ -79,9 +123,9 @@ void run_pair(const PairOptions& o) {
     std::printf("}\n");
     return;
   }
-  std::printf("# a1 = %g, a2 = %g, lambda = a2/a1 = %g, gap = %g; A x 6 pi eta a1, B, G x 4 pi eta a1^2, "
-              "C, H x 8 pi eta a1^3\n",
-              o.a1, o.a2, o.a2 / o.a1, o.gap);
+  std::printf("# %s functions; a1 = %g, a2 = %g, lambda = a2/a1 = %g, gap = %g; A x 6 pi eta a1, B, G x 4 pi eta "
+              "a1^2, C, H x 8 pi eta a1^3\n",
+              o.functions.c_str(), o.a1, o.a2, o.a2 / o.a1, o.gap);
   for (const auto& [name, value] : values) std::printf("%-5s %.10g\n", name, value);
 }
 
@@ -96,6 +140,10 @@ void add_pair_command(CLI::App& app) {
   sub->add_flag("--json", opts->json, "print one JSON object");
   sub->add_option("--regularization", opts->regularization, "epsilon added to xi = 2h/(a1+a2) (default 0)");
   sub->add_option("--outer-cutoff", opts->outer_cutoff, "surface gap beyond which lubrication is zero (default none)");
+  sub->add_option("--functions", opts->functions,
+                  "singular (default: drag + singular terms), exact_relative (the pairwise option: exact relative "
+                  "motion, rigid translation force-free) or exact (the exact two-sphere functions)")
+      ->check(CLI::IsMember({"singular", "exact_relative", "exact"}));
   sub->callback([opts]() { run_pair(*opts); });
 }
 

@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "dem/hydro/equal_sphere_remainder.hpp"
 
 namespace suspend::coupling {
 namespace {
@@ -26,7 +25,9 @@ ExactPairResistance::ExactPairResistance(double a_i, double a_j, const hydro::Lu
   if (lubrication.regularization == 0.0 && lubrication.inner_cutoff <= 0.0)
     throw InputError("lubrication.inner_cutoff must be > 0 (or lubrication.regularization > 0) for the sub-grid "
                      "correction: overlapping pairs would have infinite resistance");
-  tabulated_ = std::abs(a_j / a_i - 1.0) <= 1e-12;
+  table_i_ = hydro::ExactRemainder::for_ratio(a_j / a_i);
+  table_j_ = hydro::ExactRemainder::for_ratio(a_i / a_j);
+  tabulated_ = table_i_ != nullptr && table_j_ != nullptr;
 }
 
 double ExactPairResistance::scaled_gap(double gap) const {
@@ -38,12 +39,10 @@ void ExactPairResistance::scalars(double gap, hydro::ResistanceScalars& from_i,
   const double xi = scaled_gap(gap);
   const double log_inv_xi = std::log(1.0 / xi);  // (what lubrication_scalars(c, xi) takes: the same bits)
   from_i = model(from_i_, xi, log_inv_xi);
-  if (!tabulated_) {
-    from_j = model(from_j_, xi, log_inv_xi);
-    return;
-  }
-  hydro::EqualSphereRemainder::instance().add_to(xi, from_i);
-  from_j = from_i;  // tabulated = equal spheres: the same functions from either side
+  from_j = model(from_j_, xi, log_inv_xi);
+  if (!tabulated_) return;
+  table_i_->add_to(xi, from_i);
+  table_j_->add_to(xi, from_j);
 }
 
 }  // namespace suspend::coupling

@@ -15,7 +15,7 @@
 #include <array>
 
 #include "core/vec.hpp"
-#include "dem/hydro/equal_sphere_remainder.hpp"
+#include "dem/hydro/exact_remainder.hpp"
 #include "dem/hydro/lubrication.hpp"
 #include "dem/hydro/resistance_functions.hpp"
 

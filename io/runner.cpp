@@ -16,6 +16,7 @@
 #include "core/rng.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
+#include "io/exact_tables.hpp"
 #include "io/initial_configuration.hpp"
 #include "io/progress.hpp"
 #include "io/run_file.hpp"
@@ -167,6 +168,7 @@ int run_case(const Case& c, const RunOptions& o) {
     progress.message(origin);
     progress.message("writing " + dir.string() + "/{run.h5, run.xdmf, summary.json, checkpoint.h5} on " +
                      std::to_string(threads) + " thread(s)");
+    for (const std::string& note : exact_table_notes(c)) progress.message("note: " + note);
 
     auto save = [&] {
       file.flush();

@@ -7,7 +7,8 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "dem/hydro/equal_sphere_remainder.hpp"
+#include "dem/hydro/exact_relative.hpp"
+#include "dem/hydro/exact_remainder.hpp"
 
 namespace suspend::hydro {
 namespace {
@@ -80,10 +81,11 @@ PairLubrication::PairLubrication(double a_i, double a_j, const LubricationParams
   if (!(a_i > 0.0) || !(a_j > 0.0))
     throw InputError("lubrication pair radii must be > 0 (got " + std::to_string(a_i) + ", " + std::to_string(a_j) +
                      ")");
-  if (params.exact_relative && std::abs(a_j / a_i - 1.0) > 1e-12)
-    throw InputError("hydrodynamics.lubrication.functions = exact_relative needs equal spheres (the exact table is "
-                     "for lambda = 1; got radii " + std::to_string(a_i) + " and " + std::to_string(a_j) +
-                     "); use singular");
+  if (params.exact_relative) {
+    exact_i_ = ExactRemainder::for_ratio(a_j / a_i);
+    exact_j_ = ExactRemainder::for_ratio(a_i / a_j);
+    if (exact_i_ == nullptr || exact_j_ == nullptr) exact_i_ = exact_j_ = nullptr;
+  }
   // The ln(1/xi) terms change sign at xi = 1: beyond it the model would no longer dissipate (paper 002 App. B:
   // the outer cutoff cannot be arbitrarily large).
   if (!(scaled_gap(params.outer_cutoff) < 1.0))
@@ -106,18 +108,13 @@ void PairLubrication::scalars(double gap, ResistanceScalars& from_i, ResistanceS
   const double log_inv_xi = std::log(1.0 / xi);  // shared by both perspectives
   from_i = lubrication_scalars(from_i_, xi, log_inv_xi);
   from_j = lubrication_scalars(from_j_, xi, log_inv_xi);
-  if (params_.exact_relative) {
-    const ResistanceScalars r = EqualSphereRemainder::instance().at(xi);
-    using S = ResistanceScalars;
-    constexpr std::array<std::array<double S::*, 2>, 5> relative{{
-        {&S::x11a, &S::x12a}, {&S::y11a, &S::y12a}, {&S::y11b, &S::y12b}, {&S::x11g, &S::x12g}, {&S::y11g, &S::y12g}}};
-    for (const auto& [f11, f12] : relative) {
-      const double d = 0.5 * (r.*f11 - r.*f12);
-      from_i.*f11 += d;
-      from_i.*f12 -= d;
-    }
-    for (auto f : {&S::x11c, &S::x12c, &S::y11c, &S::y12c, &S::y11h, &S::y12h}) from_i.*f += r.*f;
-    from_j = from_i;  // equal spheres: the same functions from either side
+  if (exact_i_ != nullptr) {
+    ResistanceScalars exact_i = from_i, exact_j = from_j;
+    add_stokes_drag(exact_i);
+    add_stokes_drag(exact_j);
+    exact_i_->add_to(xi, exact_i);
+    exact_j_->add_to(xi, exact_j);
+    exact_relative_part(a_i_, a_j_, exact_i, exact_j, from_i, from_j);
   }
 }
 

@@ -15,11 +15,11 @@
 //        S_a = sum_b [ -G^{ab} (U_b - U_inf_b) - H^{ab} (Omega_b - Omega_inf_b) + M^{ab} : E_b ]   (lubrication part)
 //  * Gap used: xi = 2 max(h, h_in)/(a_i + a_j) + epsilon (saturation below h_in, regularisation epsilon);
 //    lubrication is zero for h > h_out. Lengths in a_1, viscosity eta_0 = 1: forces in eta_0 gammadot a_1^2.
-//  * exact_relative (equal spheres): the remainder r = exact - (drag + singular) of the table is added as
-//    (r11 - r12)/2 to the "11" and -(r11 - r12)/2 to the "12" functions of A, B and G, which makes X11A - X12A,
-//    Y11A - Y12A, ... exact and keeps the model's property that rigid translation of the pair costs nothing (the
-//    exact X11A + X12A != 1 is a many-body far-field effect that pairwise addition would overcount), and in full
-//    to C and H (no such null space). The M functions stay singular-only.
+//  * exact_relative: the lubrication is the part of the exact two-sphere resistance that leaves rigid translation of
+//    the pair free (exact_relative.hpp): with the drag, the approach, relative sliding and rotations are exact and
+//    the model keeps its property that rigid translation of the pair costs nothing. Needs an exact table for the
+//    pair's size ratio (1, 1.4, 1/1.4; exact_remainder.hpp); other pairs keep the singular terms (exact() false).
+//    The M functions stay singular-only.
 //  * Dimensional blocks, alpha's response to beta, d the unit vector from alpha to beta:
 //        A = 6 pi a_alpha (X^A d d + Y^A (I - d d)),  B v = 4 pi a_alpha^2 Y^B (v x d),
 //        C = 8 pi a_alpha^3 (X^C d d + Y^C (I - d d)),
@@ -32,6 +32,7 @@
 #include <Eigen/Dense>
 
 #include "core/vec.hpp"
+#include "dem/hydro/exact_remainder.hpp"
 #include "dem/hydro/resistance_functions.hpp"
 
 namespace suspend::hydro {
@@ -43,8 +44,8 @@ struct LubricationParams {
   double regularization = 0.0;  // epsilon added to the scaled gap xi (paper 000 eq. A.6)
   double inner_cutoff = 1e-3;   // h_in, surface gap in a_1 below which lubrication saturates (paper 002 App. B)
   double outer_cutoff = 0.25;   // h_out, surface gap in a_1 beyond which lubrication is zero (paper 000 Table 3)
-  // Equal spheres only: add the exact O(1) remainders of the relative motion (EqualSphereRemainder), so that the
-  // pair's relative-motion resistance is the exact two-sphere one for h_in < h < h_out (see PairLubrication).
+  // Use the exact two-sphere functions for the relative motion (exact_relative.hpp) where a table exists for the
+  // pair's size ratio, so that its relative-motion resistance is exact for h_in < h < h_out (see PairLubrication).
   bool exact_relative = false;
   // Throws InputError naming the key. Requires epsilon > 0 or h_in > 0: an overlapping pair must stay finite.
   void validate() const;
@@ -83,6 +84,8 @@ class PairLubrication {
 
   double a_i() const { return a_i_; }
   double a_j() const { return a_j_; }
+  // Whether exact_relative applies to this pair (asked for, and a table exists for its size ratio).
+  bool exact() const { return exact_i_ != nullptr; }
 
  private:
   Matrix12 assemble(const Vec3& n, const ResistanceScalars& si, const ResistanceScalars& sj) const;
@@ -92,6 +95,8 @@ class PairLubrication {
   double a_i_, a_j_;
   LubricationParams params_;
   LubricationCoefficients from_i_, from_j_;
+  const ExactRemainder* exact_i_ = nullptr;  // exact_relative: the tables seen from i and from j
+  const ExactRemainder* exact_j_ = nullptr;
 };
 
 }  // namespace suspend::hydro

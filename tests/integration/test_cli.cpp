@@ -79,6 +79,22 @@ TEST(Cli, CheckPrintsTheResolvedCaseWithDerivedValues) {
   EXPECT_EQ(r.code, 0) << r.err;
 }
 
+TEST(Cli, CheckNamesSpeciesPairsWithoutAnExactTable) {
+  // Exact near fields exist for the size ratios 1 and 1.4 only: a 1 : 2 suspension is told which pairs keep the
+  // singular terms, a 1 : 1.4 one is not.
+  const std::vector<std::string> fcm = {"check", restart_case, "--set", "hydrodynamics.model=fcm"};
+  std::vector<std::string> two = fcm, one_four = fcm;
+  two.insert(two.end(), {"--set", "particles.bidisperse.size_ratio=2"});
+  one_four.insert(one_four.end(), {"--set", "particles.bidisperse.size_ratio=1.4"});
+  const Result r2 = run(two), r14 = run(one_four);
+  ASSERT_EQ(r2.code, 0) << r2.err;
+  ASSERT_EQ(r14.code, 0) << r14.err;
+  EXPECT_NE(r2.out.find("# note: species pair of radii 1 and 2 (lambda = 2): no exact two-sphere table"),
+            std::string::npos) << r2.out;
+  EXPECT_EQ(r2.out.find("radii 1 and 1 "), std::string::npos);
+  EXPECT_EQ(r14.out.find("# note:"), std::string::npos) << r14.out;
+}
+
 TEST(Cli, KilledAndRestartedRunEndsBitIdentical) {
   const std::string a = fresh_dir("restart_a"), b = fresh_dir("restart_b");
   ASSERT_EQ(run(with_lighter({"run", restart_case, "--out", a, "--threads", "2", "--quiet"})).code, 0);

@@ -1,9 +1,18 @@
 // `suspend pair`: the JSON it prints is the library's model functions, and bad input exits with code 2.
+// `--functions exact` for the pair lambda = 1.4 against the outside table
+// (tests/data/two_sphere_resistance_table_lambda1.4.txt) on its gaps xi = 1e-4 ... 0.1, both orderings;
+// `--functions exact_relative`: rigid translation force-free, C and H exact, and the squeeze and shear built from the
+// table as dem/hydro/exact_relative.hpp states.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 
 #include "dem/hydro/resistance_functions.hpp"
@@ -31,7 +40,71 @@ double value(const std::string& json, const std::string& key) {
   return std::stod(json.substr(at + key.size() + 4));
 }
 
+// The lambda file's rows by s': {"11", "12"} functions XA YA YB XC YC XG YG YH.
+std::map<double, std::array<std::array<double, 8>, 2>> unequal_table(double lambda) {
+  std::ifstream in(SUSPEND_SOURCE_DIR "/tests/data/two_sphere_resistance_table_lambda1.4.txt");
+  std::map<double, std::array<std::array<double, 8>, 2>> t;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    double sp, lam, gam;
+    std::array<double, 8> v{};
+    if (!(s >> sp >> lam >> gam)) continue;
+    for (double& x : v) s >> x;
+    if (std::abs(lam / lambda - 1.0) < 1e-6) t[sp][gam < 0.5 ? 0 : 1] = v;
+  }
+  return t;
+}
+
+constexpr std::array<const char*, 8> self_keys{"X11A", "Y11A", "Y11B", "X11C", "Y11C", "X11G", "Y11G", "Y11H"};
+constexpr std::array<const char*, 8> pair_keys{"X12A", "Y12A", "Y12B", "X12C", "Y12C", "X12G", "Y12G", "Y12H"};
+
+std::string gap_arg(double a1, double a2, double sp) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", (sp - 2.0) * 0.5 * (a1 + a2));
+  return buf;
+}
+
 }  // namespace
+
+TEST(PairCommand, ExactFunctionsOfTheUnequalPairMatchTheTable) {
+  int checked = 0;
+  for (const auto& [a1, a2] : {std::pair{1.0, 1.4}, std::pair{1.4, 1.0}}) {
+    for (const auto& [sp, rows] : unequal_table(a2 / a1)) {
+      if (sp - 2.0 < 1e-4 * (1 - 1e-9) || sp - 2.0 > 0.1 * (1 + 1e-9)) continue;
+      const Result r = run("--a1 " + std::to_string(a1) + " --a2 " + std::to_string(a2) + " --gap " +
+                           gap_arg(a1, a2, sp) + " --functions exact --json");
+      ASSERT_EQ(r.exit_code, 0) << r.out;
+      for (int k = 0; k < 8; ++k) {
+        EXPECT_NEAR(value(r.out, self_keys[k]), rows[0][k], 5e-3 * std::abs(rows[0][k])) << sp << self_keys[k];
+        EXPECT_NEAR(value(r.out, pair_keys[k]), rows[1][k], 5e-3 * std::abs(rows[1][k])) << sp << pair_keys[k];
+      }
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 22);  // 11 gaps, both orderings
+}
+
+TEST(PairCommand, ExactRelativeFunctionsOfTheUnequalPair) {
+  const double a1 = 1.0, a2 = 1.4;
+  const auto t1 = unequal_table(a2 / a1), t2 = unequal_table(a1 / a2);
+  for (double sp : {2.001, 2.01, 2.1}) {
+    const Result r = run("--a1 1 --a2 1.4 --gap " + gap_arg(a1, a2, sp) + " --functions exact_relative --json");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const auto& e1 = t1.at(sp);
+    const auto& e2 = t2.at(sp);
+    EXPECT_NEAR(value(r.out, "X11A") + value(r.out, "X12A"), 1.0, 1e-9 * value(r.out, "X11A"));
+    EXPECT_NEAR(value(r.out, "Y11A") + value(r.out, "Y12A"), 1.0, 1e-9);
+    for (int k = 0; k < 2; ++k) {  // squeeze and shear: k = (a1 X11 + a2 X22 - a1 X12 - a2 X21 - a1 - a2)/4
+      const double want = 0.25 * (a1 * e1[0][k] + a2 * e2[0][k] - a1 * e1[1][k] - a2 * e2[1][k] - a1 - a2) / a1;
+      EXPECT_NEAR(value(r.out, self_keys[k]) - 1.0, want, 1e-6 * std::abs(want)) << sp;
+    }
+    for (int k : {3, 4, 7}) {  // C and H: the exact functions
+      EXPECT_NEAR(value(r.out, self_keys[k]), e1[0][k], 1e-6 * std::abs(e1[0][k])) << sp << self_keys[k];
+      EXPECT_NEAR(value(r.out, pair_keys[k]), e1[1][k], 1e-6 * std::abs(e1[1][k]) + 1e-9) << sp << pair_keys[k];
+    }
+  }
+}
 
 TEST(PairCommand, JsonHoldsEveryFunctionOfTheModel) {
   const Result r = run("--a1 1 --a2 3 --gap 0.002 --json");
@@ -56,7 +129,8 @@ TEST(PairCommand, BadInputIsOneLineAndExitCode2) {
   for (const char* args : {"--a1 -1 --a2 1 --gap 0.1", "--a1 1 --a2 1 --gap -0.1", "--a1 1 --a2 1 --gap 0",
                            "--a1 1e-300 --a2 1 --gap 0.1", "--a1 1 --a2 1 --gap 0.1 --outer-cutoff 0",
                            "--a1 1 --a2 1 --gap 0.1 --outer-cutoff -2", "--a1 1 --a2 1 --gap 0.1 --outer-cutoff nan",
-                           "--a1 nan --a2 1 --gap 0.1"}) {
+                           "--a1 nan --a2 1 --gap 0.1", "--a1 1 --a2 2 --gap 0.1 --functions exact",
+                           "--a1 1 --a2 1 --gap 0.1 --functions exact_relativ", "--a1 1 --a2 1 --gap 4 --functions exact"}) {
     const Result r = run(args);
     EXPECT_EQ(r.exit_code, 2) << args;
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "coupling/exact_pair_resistance.hpp"
 
@@ -58,4 +59,43 @@ TEST(CouplingExactPair, EqualSpheresReproduceTheExactTableOnItsNodes) {
     ++checked;
   }
   EXPECT_GT(checked, 40);
+}
+
+TEST(CouplingExactPair, UnequalSpheresReproduceTheLambda14TableFromBothSides) {
+  // tests/data/two_sphere_resistance_table_lambda1.4.txt: rows for lambda = 1.4 (seen from the small sphere) and
+  // 1/1.4 (from the large one, in its units). Spheres in both orders: the "from i" functions are the rows of a_j/a_i.
+  hydro::LubricationParams lp;
+  lp.inner_cutoff = 1e-9;
+  int checked = 0;
+  for (const auto& [a_i, a_j] : {std::pair{1.0, 1.4}, std::pair{1.4, 1.0}}) {
+    const coupling::ExactPairResistance exact(a_i, a_j, lp);
+    ASSERT_TRUE(exact.tabulated());
+    std::ifstream in(SUSPEND_SOURCE_DIR "/tests/data/two_sphere_resistance_table_lambda1.4.txt");
+    ASSERT_TRUE(in);
+    std::string line;
+    while (std::getline(in, line)) {
+      std::istringstream s(line);
+      double sp, lam, gam, v[8];
+      if (!(s >> sp >> lam >> gam)) continue;
+      for (double& x : v) s >> x;
+      if (sp > 3.5) continue;
+      const bool from_i = std::abs(lam - a_j / a_i) < 1e-6;
+      hydro::ResistanceScalars si, sj;
+      exact.scalars((sp - 2.0) * 0.5 * (a_i + a_j), si, sj);
+      const hydro::ResistanceScalars& f = from_i ? si : sj;
+      const bool self = gam < 0.5;
+      const double got[8] = {self ? f.x11a : f.x12a, self ? f.y11a : f.y12a, self ? f.y11b : f.y12b,
+                             self ? f.x11c : f.x12c, self ? f.y11c : f.y12c, self ? f.x11g : f.x12g,
+                             self ? f.y11g : f.y12g, self ? f.y11h : f.y12h};
+      for (int k = 0; k < 8; ++k) EXPECT_NEAR(got[k], v[k], 1e-6 * (1.0 + std::abs(v[k]))) << sp << " " << k;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 2 * 2 * 2 * 31);  // orders x perspectives x (11, 12) x the 31 gaps up to s' = 3.5
+}
+
+TEST(CouplingExactPair, OtherRatiosKeepTheSingularModel) {
+  hydro::LubricationParams lp;
+  lp.inner_cutoff = 1e-9;
+  EXPECT_FALSE(coupling::ExactPairResistance(1.0, 2.0, lp).tabulated());
 }

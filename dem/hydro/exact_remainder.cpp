@@ -1,28 +1,23 @@
-#include "dem/hydro/equal_sphere_remainder.hpp"
+#include "dem/hydro/exact_remainder.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "dem/hydro/equal_sphere_table.hpp"
+#include "dem/hydro/unequal_sphere_table.hpp"
 
 namespace suspend::hydro {
 
-const EqualSphereRemainder& EqualSphereRemainder::instance() {
-  static const EqualSphereRemainder table;
-  return table;
-}
-
-EqualSphereRemainder::EqualSphereRemainder() {
-  // Table columns: s', XA YA YB XC YC XG YG YH ("11"), the same ("12").
+ExactRemainder::ExactRemainder(double lambda, std::span<const Row> rows) : lambda_(lambda) {
   constexpr std::array<double ResistanceScalars::*, 16> column{
       &ResistanceScalars::x11a, &ResistanceScalars::y11a, &ResistanceScalars::y11b, &ResistanceScalars::x11c,
       &ResistanceScalars::y11c, &ResistanceScalars::x11g, &ResistanceScalars::y11g, &ResistanceScalars::y11h,
       &ResistanceScalars::x12a, &ResistanceScalars::y12a, &ResistanceScalars::y12b, &ResistanceScalars::x12c,
       &ResistanceScalars::y12c, &ResistanceScalars::x12g, &ResistanceScalars::y12g, &ResistanceScalars::y12h};
-  const LubricationCoefficients equal = LubricationCoefficients::for_ratio(1.0);
-  for (const auto& row : equal_sphere_resistance_table) {
+  const LubricationCoefficients coefficients = LubricationCoefficients::for_ratio(lambda);
+  for (const Row& row : rows) {
     const double xi = row[0] - 2.0;
-    ResistanceScalars model = lubrication_scalars(equal, xi, std::log(1.0 / xi));
+    ResistanceScalars model = lubrication_scalars(coefficients, xi, std::log(1.0 / xi));
     add_stokes_drag(model);
     ResistanceScalars r{};
     r.xi = xi;
@@ -32,7 +27,18 @@ EqualSphereRemainder::EqualSphereRemainder() {
   }
 }
 
-ResistanceScalars EqualSphereRemainder::at(double xi) const {
+const ExactRemainder* ExactRemainder::for_ratio(double lambda) {
+  static const ExactRemainder equal(1.0, equal_sphere_resistance_table);
+  static const ExactRemainder large(1.4, resistance_table_lambda_1_4);
+  static const ExactRemainder small(1.0 / 1.4, resistance_table_lambda_1_over_1_4);
+  for (const ExactRemainder* t : {&equal, &large, &small})
+    if (std::abs(lambda / t->lambda() - 1.0) <= 1e-9) return t;
+  return nullptr;
+}
+
+std::string ExactRemainder::shipped_ratios() { return "1, 1.4 and 1/1.4"; }
+
+ResistanceScalars ExactRemainder::at(double xi) const {
   const auto it = std::upper_bound(xi_.begin(), xi_.end(), xi);
   std::size_t k1 = static_cast<std::size_t>(it - xi_.begin());
   std::size_t k0 = k1 == 0 ? 0 : k1 - 1;
@@ -44,7 +50,7 @@ ResistanceScalars EqualSphereRemainder::at(double xi) const {
   return r;
 }
 
-void EqualSphereRemainder::add_to(double xi, ResistanceScalars& s) const {
+void ExactRemainder::add_to(double xi, ResistanceScalars& s) const {
   const ResistanceScalars r = at(xi);
   for (auto f : tabulated_functions) s.*f += r.*f;
 }

@@ -1,0 +1,48 @@
+// The O(1) remainder of the pairwise model: exact - (Stokes drag + singular terms), for the sixteen functions of
+// the exact two-sphere tables (A, B, C, G, H; Jeffrey & Onishi 1984 / Townsend): equal spheres
+// (equal_sphere_table.hpp) and the size ratios lambda = a2/a1 = 1.4 and 1/1.4 (unequal_sphere_table.hpp).
+// Bounded at contact (lambda = 1: X11A -0.0046, Y11B +0.239, ...; docs/lubrication.md section 3), so it is
+// interpolated linearly in xi between the table's gaps and held at the end values outside them.
+// Used by the exact sub-grid target of the FCM coupling (coupling/exact_pair_resistance.hpp) and by the pairwise
+// option `hydrodynamics.lubrication.functions: exact_relative` (lubrication.hpp).
+#pragma once
+#include <array>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "dem/hydro/resistance_functions.hpp"
+
+namespace suspend::hydro {
+
+// The sixteen scalars of the exact tables, in ResistanceScalars.
+inline constexpr std::array<double ResistanceScalars::*, 16> tabulated_functions{
+    &ResistanceScalars::x11a, &ResistanceScalars::x12a, &ResistanceScalars::y11a, &ResistanceScalars::y12a,
+    &ResistanceScalars::y11b, &ResistanceScalars::y12b, &ResistanceScalars::x11c, &ResistanceScalars::x12c,
+    &ResistanceScalars::y11c, &ResistanceScalars::y12c, &ResistanceScalars::x11g, &ResistanceScalars::x12g,
+    &ResistanceScalars::y11g, &ResistanceScalars::y12g, &ResistanceScalars::y11h, &ResistanceScalars::y12h};
+
+class ExactRemainder {
+ public:
+  // Table rows: s', XA YA YB XC YC XG YG YH ("11"), the same ("12"), in the units of sphere 1, s' ascending.
+  using Row = std::array<double, 17>;
+  ExactRemainder(double lambda, std::span<const Row> rows);
+
+  // The shipped table for lambda = a2/a1 (1, 1.4 or 1/1.4, to a relative 1e-9), or nullptr when there is none.
+  static const ExactRemainder* for_ratio(double lambda);
+  // The ratios with a shipped table, for messages: "1, 1.4 and 1/1.4".
+  static std::string shipped_ratios();
+
+  // Adds the remainder at scaled gap xi to every tabulated function of s.
+  void add_to(double xi, ResistanceScalars& s) const;
+  // The interpolated remainder at xi (M functions and xi left zero).
+  ResistanceScalars at(double xi) const;
+  double lambda() const { return lambda_; }
+
+ private:
+  double lambda_;
+  std::vector<double> xi_;
+  std::vector<ResistanceScalars> remainder_;
+};
+
+}  // namespace suspend::hydro

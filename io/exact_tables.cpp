@@ -1,0 +1,31 @@
+#include "io/exact_tables.hpp"
+
+#include <cstdio>
+
+#include "dem/hydro/exact_remainder.hpp"
+
+namespace suspend::io {
+
+std::vector<std::string> exact_table_notes(const Case& c) {
+  std::vector<std::string> notes;
+  const bool fcm = c.hydrodynamics == "fcm" && c.fcm.subgrid;
+  const bool pairwise = c.hydrodynamics == "pairwise" && c.simulation.lubrication &&
+                        c.simulation.resistance.lubrication.exact_relative;
+  if (!fcm && !pairwise) return notes;
+  const auto& species = c.particles.species;
+  for (std::size_t s = 0; s < species.size(); ++s)
+    for (std::size_t t = s; t < species.size(); ++t) {
+      const double lambda = species[t].radius / species[s].radius;
+      if (hydro::ExactRemainder::for_ratio(lambda) != nullptr) continue;
+      char line[320];
+      std::snprintf(line, sizeof line,
+                    "species pair of radii %g and %g (lambda = %.6g): no exact two-sphere table (shipped for lambda = "
+                    "%s); its %s keeps the singular lubrication terms",
+                    species[s].radius, species[t].radius, lambda, hydro::ExactRemainder::shipped_ratios().c_str(),
+                    fcm ? "sub-grid correction" : "exact_relative lubrication");
+      notes.emplace_back(line);
+    }
+  return notes;
+}
+
+}  // namespace suspend::io
