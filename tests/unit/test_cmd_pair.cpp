@@ -10,12 +10,11 @@
 #include <cstdio>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 
 #include "dem/hydro/resistance_functions.hpp"
+#include "tests/two_sphere_table.hpp"
 
 namespace {
 
@@ -40,20 +39,8 @@ double value(const std::string& json, const std::string& key) {
   return std::stod(json.substr(at + key.size() + 4));
 }
 
-// The lambda file's rows by s': {"11", "12"} functions XA YA YB XC YC XG YG YH.
 std::map<double, std::array<std::array<double, 8>, 2>> unequal_table(double lambda) {
-  std::ifstream in(SUSPEND_SOURCE_DIR "/tests/data/two_sphere_resistance_table_lambda1.4.txt");
-  std::map<double, std::array<std::array<double, 8>, 2>> t;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream s(line);
-    double sp, lam, gam;
-    std::array<double, 8> v{};
-    if (!(s >> sp >> lam >> gam)) continue;
-    for (double& x : v) s >> x;
-    if (std::abs(lam / lambda - 1.0) < 1e-6) t[sp][gam < 0.5 ? 0 : 1] = v;
-  }
-  return t;
+  return suspend::test::lambda_1_4_table(lambda);
 }
 
 constexpr std::array<const char*, 8> self_keys{"X11A", "Y11A", "Y11B", "X11C", "Y11C", "X11G", "Y11G", "Y11H"};

@@ -14,14 +14,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <iostream>
-#include <map>
-#include <sstream>
-#include <string>
 #include <vector>
 
 #include "dem/hydro/exact_remainder.hpp"
+#include "tests/two_sphere_table.hpp"
 
 using namespace suspend::hydro;
 
@@ -29,23 +26,14 @@ namespace {
 
 // Rows of the reference file for one lambda, in the layout of ExactRemainder::Row.
 std::vector<ExactRemainder::Row> reference_rows(double lambda) {
-  std::ifstream in(SUSPEND_SOURCE_DIR "/tests/data/two_sphere_resistance_table_lambda1.4.txt");
-  std::string line;
-  std::map<double, ExactRemainder::Row> rows;
-  while (std::getline(in, line)) {
-    std::istringstream s(line);
-    double sp, lam, gam;
-    std::array<double, 11> v{};
-    if (!(s >> sp >> lam >> gam)) continue;
-    bool ok = true;
-    for (double& x : v) ok = ok && static_cast<bool>(s >> x);
-    if (!ok || std::abs(lam / lambda - 1.0) > 1e-6) continue;
-    ExactRemainder::Row& r = rows[sp];
-    r[0] = sp;
-    for (int k = 0; k < 8; ++k) r[1 + k + (gam < 0.5 ? 0 : 8)] = v[k];
-  }
   std::vector<ExactRemainder::Row> out;
-  for (const auto& [sp, r] : rows) out.push_back(r);
+  for (const auto& [sp, f] : suspend::test::lambda_1_4_table(lambda)) {
+    ExactRemainder::Row r{};
+    r[0] = sp;
+    std::copy(f[0].begin(), f[0].end(), r.begin() + 1);
+    std::copy(f[1].begin(), f[1].end(), r.begin() + 9);
+    out.push_back(r);
+  }
   return out;
 }
 

@@ -13,15 +13,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <utility>
 
 #include "core/error.hpp"
 #include "dem/hydro/lubrication.hpp"
+#include "tests/two_sphere_table.hpp"
 
 using namespace suspend;
 using namespace suspend::hydro;
@@ -38,19 +37,7 @@ LubricationParams exact_params() {
 
 // Exact table at lambda = 1: s' -> {"11" row, "12" row}, columns XA YA YB XC YC XG YG YH.
 std::map<double, std::array<std::array<double, 8>, 2>> exact_table() {
-  std::ifstream in(SUSPEND_SOURCE_DIR "/tests/data/two_sphere_resistance_table.txt");
-  std::map<double, std::array<std::array<double, 8>, 2>> t;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream s(line);
-    double sp, lam, gam;
-    std::array<double, 8> v{};
-    if (!(s >> sp >> lam >> gam)) continue;
-    bool ok = true;
-    for (double& x : v) ok = ok && static_cast<bool>(s >> x);
-    if (ok && lam == 1.0) t[sp][gam < 0.5 ? 0 : 1] = v;
-  }
-  return t;
+  return suspend::test::read_two_sphere_table("two_sphere_resistance_table.txt", 1.0);
 }
 
 }  // namespace
@@ -109,22 +96,10 @@ constexpr double pi = std::numbers::pi;
 
 // The lambda = 1.4 file's "11" and "12" rows (XA YA YB XC YC XG YG YH) at s' for the given lambda.
 std::array<std::array<double, 8>, 2> unequal_row(double lambda, double sp) {
-  std::ifstream in(SUSPEND_SOURCE_DIR "/tests/data/two_sphere_resistance_table_lambda1.4.txt");
-  std::array<std::array<double, 8>, 2> out{};
-  int found = 0;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream s(line);
-    double x, lam, gam;
-    std::array<double, 11> v{};
-    if (!(s >> x >> lam >> gam)) continue;
-    for (double& y : v) s >> y;
-    if (std::abs(lam / lambda - 1.0) > 1e-6 || std::abs(x - sp) > 1e-9) continue;
-    std::copy(v.begin(), v.begin() + 8, out[gam < 0.5 ? 0 : 1].begin());
-    ++found;
-  }
-  EXPECT_EQ(found, 2) << lambda << " " << sp;
-  return out;
+  const auto table = suspend::test::lambda_1_4_table(lambda);
+  const auto it = table.find(sp);
+  EXPECT_TRUE(it != table.end()) << lambda << " " << sp;
+  return it == table.end() ? std::array<std::array<double, 8>, 2>{} : it->second;
 }
 
 struct ExactPair {
