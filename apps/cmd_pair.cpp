@@ -64,32 +64,23 @@ void check(const PairOptions& o) {
           "--gap = " + str(o.gap) + ": the exact tables end at xi = 2(gap)/(a1 + a2) = 2.5");
 }
 
-// Drag + singular terms + the tabulated remainder, seen from 1 (lambda) and from 2 (1/lambda, in a2 units).
-void exact_functions(double lambda, double xi, hydro::ResistanceScalars& from_1, hydro::ResistanceScalars& from_2) {
-  from_1 = hydro::lubrication_scalars(hydro::LubricationCoefficients::for_ratio(lambda), xi);
-  from_2 = hydro::lubrication_scalars(hydro::LubricationCoefficients::for_ratio(1.0 / lambda), xi);
-  hydro::add_stokes_drag(from_1);
-  hydro::add_stokes_drag(from_2);
-  hydro::ExactRemainder::for_ratio(lambda)->add_to(xi, from_1);
-  hydro::ExactRemainder::for_ratio(1.0 / lambda)->add_to(xi, from_2);
-}
-
 hydro::ResistanceScalars pair_functions(const PairOptions& o) {
   hydro::TwoSphereOptions opt;
   opt.regularization = o.regularization;
   opt.outer_cutoff = o.outer_cutoff;
   hydro::ResistanceScalars s = hydro::two_sphere_resistance(o.a1, o.a2, o.gap, opt);  // singular
   if (o.functions == "singular" || (o.outer_cutoff >= 0.0 && o.gap > o.outer_cutoff)) return s;
-  const double xi = 2.0 * o.gap / (o.a1 + o.a2) + o.regularization;
-  hydro::ResistanceScalars exact_1, exact_2;
-  exact_functions(o.a2 / o.a1, xi, exact_1, exact_2);
+  const double xi = 2.0 * o.gap / (o.a1 + o.a2) + o.regularization, log_inv_xi = std::log(1.0 / xi);
+  // Seen from sphere 1 (lambda) and from sphere 2 (1/lambda, in a2 units).
+  hydro::ResistanceScalars exact_1 = hydro::ExactRemainder::for_ratio(o.a2 / o.a1)->exact(xi, log_inv_xi);
+  const hydro::ResistanceScalars exact_2 = hydro::ExactRemainder::for_ratio(o.a1 / o.a2)->exact(xi, log_inv_xi);
   if (o.functions == "exact") {
     exact_1.xi = s.xi;
     return exact_1;
   }
-  const hydro::LubricationCoefficients c1 = hydro::LubricationCoefficients::for_ratio(o.a2 / o.a1);
-  hydro::ResistanceScalars lub_1 = hydro::lubrication_scalars(c1, xi);
-  hydro::ResistanceScalars lub_2 = hydro::lubrication_scalars(hydro::LubricationCoefficients::for_ratio(o.a1 / o.a2), xi);
+  using hydro::LubricationCoefficients;
+  hydro::ResistanceScalars lub_1 = hydro::lubrication_scalars(LubricationCoefficients::for_ratio(o.a2 / o.a1), xi);
+  hydro::ResistanceScalars lub_2 = hydro::lubrication_scalars(LubricationCoefficients::for_ratio(o.a1 / o.a2), xi);
   hydro::exact_relative_part(o.a1, o.a2, exact_1, exact_2, lub_1, lub_2);
   hydro::add_stokes_drag(lub_1);
   lub_1.xi = s.xi;

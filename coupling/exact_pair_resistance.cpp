@@ -27,7 +27,7 @@ ExactPairResistance::ExactPairResistance(double a_i, double a_j, const hydro::Lu
                      "correction: overlapping pairs would have infinite resistance");
   table_i_ = hydro::ExactRemainder::for_ratio(a_j / a_i);
   table_j_ = hydro::ExactRemainder::for_ratio(a_i / a_j);
-  tabulated_ = table_i_ != nullptr && table_j_ != nullptr;
+  if (table_i_ == nullptr || table_j_ == nullptr) table_i_ = table_j_ = nullptr;
 }
 
 double ExactPairResistance::scaled_gap(double gap) const {
@@ -38,11 +38,13 @@ void ExactPairResistance::scalars(double gap, hydro::ResistanceScalars& from_i,
                                   hydro::ResistanceScalars& from_j) const {
   const double xi = scaled_gap(gap);
   const double log_inv_xi = std::log(1.0 / xi);  // (what lubrication_scalars(c, xi) takes: the same bits)
+  if (tabulated()) {
+    from_i = table_i_->exact(xi, log_inv_xi);
+    from_j = table_j_->exact(xi, log_inv_xi);
+    return;
+  }
   from_i = model(from_i_, xi, log_inv_xi);
   from_j = model(from_j_, xi, log_inv_xi);
-  if (!tabulated_) return;
-  table_i_->add_to(xi, from_i);
-  table_j_->add_to(xi, from_j);
 }
 
 }  // namespace suspend::coupling

@@ -25,7 +25,8 @@ void exact_relative_part(double a_i, double a_j, const ResistanceScalars& exact_
     lub_j.*f12 = -(lub_j.*f11);
   }
   // Rotation and rotation-strain: untouched by the projection.
-  for (const auto& [lub, exact] : {std::pair<S*, const S*>{&lub_i, &exact_i}, std::pair<S*, const S*>{&lub_j, &exact_j}}) {
+  using Side = std::pair<S*, const S*>;
+  for (const auto& [lub, exact] : {Side{&lub_i, &exact_i}, Side{&lub_j, &exact_j}}) {
     lub->x11c = exact->x11c - 1.0;
     lub->x12c = exact->x12c;
     lub->y11c = exact->y11c - 1.0;

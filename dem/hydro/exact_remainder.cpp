@@ -8,16 +8,16 @@
 
 namespace suspend::hydro {
 
-ExactRemainder::ExactRemainder(double lambda, std::span<const Row> rows) : lambda_(lambda) {
+ExactRemainder::ExactRemainder(double lambda, std::span<const Row> rows)
+    : lambda_(lambda), coefficients_(LubricationCoefficients::for_ratio(lambda)) {
   constexpr std::array<double ResistanceScalars::*, 16> column{
       &ResistanceScalars::x11a, &ResistanceScalars::y11a, &ResistanceScalars::y11b, &ResistanceScalars::x11c,
       &ResistanceScalars::y11c, &ResistanceScalars::x11g, &ResistanceScalars::y11g, &ResistanceScalars::y11h,
       &ResistanceScalars::x12a, &ResistanceScalars::y12a, &ResistanceScalars::y12b, &ResistanceScalars::x12c,
       &ResistanceScalars::y12c, &ResistanceScalars::x12g, &ResistanceScalars::y12g, &ResistanceScalars::y12h};
-  const LubricationCoefficients coefficients = LubricationCoefficients::for_ratio(lambda);
   for (const Row& row : rows) {
     const double xi = row[0] - 2.0;
-    ResistanceScalars model = lubrication_scalars(coefficients, xi, std::log(1.0 / xi));
+    ResistanceScalars model = lubrication_scalars(coefficients_, xi, std::log(1.0 / xi));
     add_stokes_drag(model);
     ResistanceScalars r{};
     r.xi = xi;
@@ -48,6 +48,13 @@ ResistanceScalars ExactRemainder::at(double xi) const {
   ResistanceScalars r{};
   for (auto f : tabulated_functions) r.*f = (1.0 - w) * remainder_[k0].*f + w * remainder_[k1].*f;
   return r;
+}
+
+ResistanceScalars ExactRemainder::exact(double xi, double log_inv_xi) const {
+  ResistanceScalars s = lubrication_scalars(coefficients_, xi, log_inv_xi);
+  add_stokes_drag(s);
+  add_to(xi, s);
+  return s;
 }
 
 void ExactRemainder::add_to(double xi, ResistanceScalars& s) const {

@@ -37,10 +37,14 @@ class ExactRemainder {
   void add_to(double xi, ResistanceScalars& s) const;
   // The interpolated remainder at xi (M functions and xi left zero).
   ResistanceScalars at(double xi) const;
+  // The exact functions at xi: Stokes drag + the singular terms of this table's lambda + the remainder (the M
+  // functions singular only). log_inv_xi = ln(1/xi), shared by the two spheres' calls.
+  ResistanceScalars exact(double xi, double log_inv_xi) const;
   double lambda() const { return lambda_; }
 
  private:
   double lambda_;
+  LubricationCoefficients coefficients_;
   std::vector<double> xi_;
   std::vector<ResistanceScalars> remainder_;
 };

@@ -108,14 +108,8 @@ void PairLubrication::scalars(double gap, ResistanceScalars& from_i, ResistanceS
   const double log_inv_xi = std::log(1.0 / xi);  // shared by both perspectives
   from_i = lubrication_scalars(from_i_, xi, log_inv_xi);
   from_j = lubrication_scalars(from_j_, xi, log_inv_xi);
-  if (exact_i_ != nullptr) {
-    ResistanceScalars exact_i = from_i, exact_j = from_j;
-    add_stokes_drag(exact_i);
-    add_stokes_drag(exact_j);
-    exact_i_->add_to(xi, exact_i);
-    exact_j_->add_to(xi, exact_j);
-    exact_relative_part(a_i_, a_j_, exact_i, exact_j, from_i, from_j);
-  }
+  if (exact_i_ != nullptr)
+    exact_relative_part(a_i_, a_j_, exact_i_->exact(xi, log_inv_xi), exact_j_->exact(xi, log_inv_xi), from_i, from_j);
 }
 
 Matrix12 PairLubrication::resistance(const Vec3& n, double gap) const {

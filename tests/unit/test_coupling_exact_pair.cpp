@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "coupling/exact_pair_resistance.hpp"
+#include "tests/two_sphere_table.hpp"
 
 using namespace suspend;
 
@@ -70,25 +71,23 @@ TEST(CouplingExactPair, UnequalSpheresReproduceTheLambda14TableFromBothSides) {
   for (const auto& [a_i, a_j] : {std::pair{1.0, 1.4}, std::pair{1.4, 1.0}}) {
     const coupling::ExactPairResistance exact(a_i, a_j, lp);
     ASSERT_TRUE(exact.tabulated());
-    std::ifstream in(SUSPEND_SOURCE_DIR "/tests/data/two_sphere_resistance_table_lambda1.4.txt");
-    ASSERT_TRUE(in);
-    std::string line;
-    while (std::getline(in, line)) {
-      std::istringstream s(line);
-      double sp, lam, gam, v[8];
-      if (!(s >> sp >> lam >> gam)) continue;
-      for (double& x : v) s >> x;
-      if (sp > 3.5) continue;
-      const bool from_i = std::abs(lam - a_j / a_i) < 1e-6;
-      hydro::ResistanceScalars si, sj;
-      exact.scalars((sp - 2.0) * 0.5 * (a_i + a_j), si, sj);
-      const hydro::ResistanceScalars& f = from_i ? si : sj;
-      const bool self = gam < 0.5;
-      const double got[8] = {self ? f.x11a : f.x12a, self ? f.y11a : f.y12a, self ? f.y11b : f.y12b,
-                             self ? f.x11c : f.x12c, self ? f.y11c : f.y12c, self ? f.x11g : f.x12g,
-                             self ? f.y11g : f.y12g, self ? f.y11h : f.y12h};
-      for (int k = 0; k < 8; ++k) EXPECT_NEAR(got[k], v[k], 1e-6 * (1.0 + std::abs(v[k]))) << sp << " " << k;
-      ++checked;
+    for (const bool from_i : {true, false}) {
+      // The rows seen from i are those of a_j/a_i; from j, those of a_i/a_j.
+      const auto table = test::lambda_1_4_table(from_i ? a_j / a_i : a_i / a_j);
+      for (const auto& [sp, rows] : table) {
+        if (sp > 3.5) continue;
+        hydro::ResistanceScalars si, sj;
+        exact.scalars((sp - 2.0) * 0.5 * (a_i + a_j), si, sj);
+        const hydro::ResistanceScalars& f = from_i ? si : sj;
+        for (const bool self : {true, false}) {
+          const double got[8] = {self ? f.x11a : f.x12a, self ? f.y11a : f.y12a, self ? f.y11b : f.y12b,
+                                 self ? f.x11c : f.x12c, self ? f.y11c : f.y12c, self ? f.x11g : f.x12g,
+                                 self ? f.y11g : f.y12g, self ? f.y11h : f.y12h};
+          const auto& v = rows[self ? 0 : 1];
+          for (int k = 0; k < 8; ++k) EXPECT_NEAR(got[k], v[k], 1e-6 * (1.0 + std::abs(v[k]))) << sp << " " << k;
+          ++checked;
+        }
+      }
     }
   }
   EXPECT_EQ(checked, 2 * 2 * 2 * 31);  // orders x perspectives x (11, 12) x the 31 gaps up to s' = 3.5
