@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <tuple>
@@ -42,6 +43,10 @@ void KrylovParams::validate() const {
   if (!(preconditioner_cutoff >= 2.0)) throw InputError("fcm.preconditioner_cutoff must be >= 2");
   if (!(inner_tolerance > 0.0 && inner_tolerance < 1.0)) throw InputError("fcm.inner_tolerance must lie in (0, 1)");
   if (inner_max_iterations < 1) throw InputError("fcm.inner_max_iterations must be at least 1");
+  if (!(lagged_tolerance > 0.0 && lagged_tolerance < 1.0))
+    throw InputError("fcm.lagged_tolerance must lie in (0, 1)");
+  if (far_field_every < 1) throw InputError("fcm.far_field_every must be at least 1");
+  if (!(lagged_cutoff >= 2.0)) throw InputError("fcm.lagged_cutoff must be >= 2");
 }
 
 CoupledMobility::CoupledMobility(const Vec3& box_length, std::array<int, 3> grid, const fcm::SolverOptions& fcm,
@@ -57,23 +62,39 @@ void CoupledMobility::solve_parts(const CoupledProblem& problem, SubgridLubricat
   shear.forces = {};
   shear.torques = {};
   force.shear_rate = 0.0;
+  // A lagged-far-field second part reuses the near-field matrix of the first (same configuration).
+  lagged_matrix_ready_ = false;
+  keep_lagged_matrix_ = true;
   for (auto [pb, ws, out] : {std::tuple{&shear, &shear_warm_, &shear_part}, std::tuple{&force, &force_warm_, &force_part}}) {
     exchange(*ws);
     try {
       solve(*pb, subgrid, *out);
     } catch (...) {
       exchange(*ws);
+      keep_lagged_matrix_ = lagged_matrix_ready_ = false;
       throw;
     }
     exchange(*ws);
+    keep_lagged_matrix_ = false;
   }
+  lagged_matrix_ready_ = false;
+}
+
+bool CoupledMobility::has_far_field(std::size_t n) const {
+  const Index nv = 6 * static_cast<Index>(n), nx = 11 * static_cast<Index>(n);
+  const auto kept = [&](const Eigen::VectorXd& g, const Eigen::VectorXd& x) { return g.size() == nv && x.size() == nx; };
+  if (shear_warm_.last.size() != 0 || shear_warm_.defect.size() != 0)
+    return kept(shear_warm_.defect, shear_warm_.last) && kept(force_warm_.defect, force_warm_.last);
+  return kept(defect_, x_);
 }
 
 namespace {
 
-void append(std::vector<double>& s, const Eigen::VectorXd& last, const Eigen::VectorXd& older) {
+void append(std::vector<double>& s, const Eigen::VectorXd& last, const Eigen::VectorXd& older,
+            const Eigen::VectorXd& defect) {
   s.insert(s.end(), last.data(), last.data() + last.size());
   if (older.size() == last.size()) s.insert(s.end(), older.data(), older.data() + older.size());
+  if (defect.size() * 11 == last.size() * 6) s.insert(s.end(), defect.data(), defect.data() + defect.size());
 }
 
 }  // namespace
@@ -81,10 +102,10 @@ void append(std::vector<double>& s, const Eigen::VectorXd& last, const Eigen::Ve
 std::vector<double> CoupledMobility::warm_start_state() const {
   std::vector<double> s;
   if (shear_warm_.last.size() == 0) {
-    append(s, x_, x_older_);
+    append(s, x_, x_older_, defect_);
   } else {
-    append(s, shear_warm_.last, shear_warm_.older);
-    append(s, force_warm_.last, force_warm_.older);
+    append(s, shear_warm_.last, shear_warm_.older, shear_warm_.defect);
+    append(s, force_warm_.last, force_warm_.older, force_warm_.defect);
   }
   return s;
 }
@@ -93,20 +114,28 @@ void CoupledMobility::set_warm_start_state(const std::vector<double>& state, std
   forget_warm_start();
   if (state.empty()) return;
   const std::size_t per = n == 0 ? 0 : state.size() / n;
-  const bool fits = n > 0 && state.size() == per * n && (parts ? (per == 22 || per == 44) : (per == 11 || per == 22));
+  // Per part: last (11), older (11, when extrapolating), defect (6, lagged far field).
+  const std::size_t part = parts ? per / 2 : per;
+  const bool fits = n > 0 && state.size() == per * n && (!parts || per % 2 == 0) &&
+                    (part == 11 || part == 22 || part == 17 || part == 28);
   if (!fits) return;  // another layout (a restart that changes the flow control, or the pairwise engine's): start cold
-  const Eigen::Index block = static_cast<Eigen::Index>(11 * n);
-  const auto read = [&](Eigen::Index k) { return Eigen::Map<const Eigen::VectorXd>(state.data() + k * block, block); };
+  const bool older = part == 22 || part == 28, defect = part == 17 || part == 28;
+  const double* at = state.data();
+  const auto read = [&](std::size_t values, Eigen::VectorXd& v) {
+    v = Eigen::Map<const Eigen::VectorXd>(at, static_cast<Eigen::Index>(values * n));
+    at += values * n;
+  };
+  const auto read_part = [&](Eigen::VectorXd& last, Eigen::VectorXd& old, Eigen::VectorXd& g) {
+    read(11, last);
+    if (older) read(11, old);
+    if (defect) read(6, g);
+  };
   if (!parts) {
-    x_ = read(0);
-    if (per == 22) x_older_ = read(1);
+    read_part(x_, x_older_, defect_);
     return;
   }
-  const bool older = per == 44;
-  shear_warm_.last = read(0);
-  if (older) shear_warm_.older = read(1);
-  force_warm_.last = read(older ? 2 : 1);
-  if (older) force_warm_.older = read(3);
+  read_part(shear_warm_.last, shear_warm_.older, shear_warm_.defect);
+  read_part(force_warm_.last, force_warm_.older, force_warm_.defect);
 }
 
 void CoupledMobility::stokes(const CoupledProblem& pb, const Eigen::VectorXd& f, const Eigen::VectorXd& s,
@@ -162,6 +191,11 @@ void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgri
   if (!params_.warm_start || x_.size() != nv + ns) {
     x_ = Eigen::VectorXd::Zero(nv + ns);
     x_older_.resize(0);
+    defect_.resize(0);
+  }
+  if (!pb.refresh_far_field && defect_.size() == nv) {
+    solve_lagged(pb, subgrid, f0, out);
+    return;
   }
   const Eigen::VectorXd last = x_;
   // Linear, not quadratic (3 x_n - 3 x_{n-1} + x_{n-2}): the stored solutions carry errors up to the tolerance,
@@ -265,6 +299,71 @@ void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgri
   }
 
   x_older_ = last;
+  if (params_.far_field_every > 1) {  // the defect g = A dV - f0 of this solution (contract)
+    prepare_lagged_matrix(pb, subgrid, false);
+    const Eigen::VectorXd dv_r = x_.head(nv);
+    if (subgrid && subgrid->corrected_pairs() > 0) {
+      lagged_.multiply(dv_r, defect_);
+    } else {
+      defect_ = r_stokes.cwiseProduct(dv_r);
+    }
+    defect_ -= f0;
+  } else {
+    defect_.resize(0);
+  }
+  write_result(pb, subgrid, out);
+}
+
+void CoupledMobility::solve_lagged(const CoupledProblem& pb, SubgridLubrication* subgrid, const Eigen::VectorXd& f0,
+                                   CoupledResult& out) {
+  const std::size_t n = pb.positions.size();
+  const Index nv = 6 * static_cast<Index>(n);
+  const double t0 = omp_get_wtime();
+  const bool near = subgrid && subgrid->corrected_pairs() > 0;
+  if (near && !lagged_matrix_ready_) prepare_lagged_matrix(pb, subgrid, true);
+  lagged_matrix_ready_ = keep_lagged_matrix_;
+  const Eigen::VectorXd rhs = f0 + defect_;
+  Eigen::VectorXd sol = x_.head(nv);
+  if (params_.extrapolate && x_older_.size() == x_.size()) sol = 2.0 * x_.head(nv) - x_older_.head(nv);
+  out.iterations = 0;
+  out.residual = 0.0;
+  if (near) {
+    const ConjugateGradientReport cg =
+        lagged_cg_.solve(lagged_, rhs, sol, params_.lagged_tolerance, params_.max_iterations * 25,
+                         Preconditioner::symmetric_gauss_seidel);
+    if (!cg.converged)
+      throw NumericalError("lagged-far-field solve (near-field conjugate gradients) did not converge in " +
+                           std::to_string(cg.iterations) + " iterations (relative residual " +
+                           std::to_string(cg.residual) + ")");
+    out.iterations = cg.iterations;
+    out.residual = cg.residual;
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double a = pb.radii[i];
+      sol.segment<3>(6 * static_cast<Index>(i)) = rhs.segment<3>(6 * static_cast<Index>(i)) / (6.0 * pi * a);
+      sol.segment<3>(6 * static_cast<Index>(i) + 3) =
+          rhs.segment<3>(6 * static_cast<Index>(i) + 3) / (8.0 * pi * a * a * a);
+    }
+  }
+  if (!sol.allFinite()) throw NumericalError("lagged-far-field solve: non-finite solution");
+  timings_.subgrid += omp_get_wtime() - t0;
+  x_older_ = x_;
+  x_.head(nv) = sol;  // the stresslets stay those of the last full solve
+  out.stokes_solves = 0;
+  write_result(pb, subgrid, out);
+}
+
+void CoupledMobility::prepare_lagged_matrix(const CoupledProblem& pb, SubgridLubrication* subgrid, bool factor) {
+  if (!subgrid || subgrid->corrected_pairs() == 0) return;
+  const std::vector<double> radius(pb.radii.begin(), pb.radii.end());
+  subgrid->resistance_matrix(radius, params_.lagged_cutoff, lagged_, true, params_.lagged_pair_relative);
+  if (factor) lagged_cg_.prepare(lagged_);  // throws NumericalError if a diagonal block is not positive definite
+}
+
+void CoupledMobility::write_result(const CoupledProblem& pb, SubgridLubrication* subgrid, CoupledResult& out) const {
+  const std::size_t n = pb.positions.size();
+  const Index nv = 6 * static_cast<Index>(n);
+  const auto& basis = traceless_basis();
   out.velocities.resize(n);
   out.angular_velocities.resize(n);
   out.stresslets.resize(n);

@@ -23,6 +23,19 @@
 //    (|T_i| / 8 pi a_i^3)^2 ] (strain-rate units, like the FCM rigidity solve).
 //  * Warm start: the previous solution if the particle count matches (set_warm_start for restarts), or, with
 //    `extrapolate` and two previous solutions, 2 x_n - x_{n-1} (the particles move smoothly; steps of similar size).
+//  * Lagged far field (multi-rate stepping; CoupledProblem::refresh_far_field = false): no Stokes solve. With the
+//    near-field resistance A = R_Stokes + sum'' Delta_R (sum'' over the corrected pairs with s' < lagged_cutoff
+//    and every implicit contact step), the far field of the last full solve is kept as its defect
+//        g = A_r dV_r - f0_r = R_Stokes dV_r - F_r - sum''' Delta_R dV_r        (sum''': the other corrected pairs),
+//    the force per particle that FCM and the wider corrections add to isolated-sphere drag, and the velocities
+//    solve the sparse system of the present configuration
+//        A dV = f0 + g
+//    by block-SGS conjugate gradients to lagged_tolerance (relative). Sub-grid lubrication of the close pairs,
+//    implicit contact steps and all strain forces are those of the present step, so every close pair keeps its
+//    exact resistance; g and the FCM stresslets are those of the last full solve. With g of the present
+//    configuration this is the full solution, so the error is the drift of g over the lag (docs/coupling.md
+//    section 7). Without a stored g (cold start, another particle count) the solve is full. solve_parts keeps one
+//    g per part.
 // Units: eta = 1, lengths in a_1.
 #pragma once
 #include <array>
@@ -51,6 +64,12 @@ struct KrylovParams {
   // 5: at min gaps 0.01-0.001 a (phi = 0.45, bench_coupling) the same GMRES iterations (+0.1-0.4 per step) for a
   // fifth to a sixth of the inner iterations of 50 (docs/coupling.md section 6).
   int inner_max_iterations = 5;
+  double lagged_tolerance = 1e-6;  // relative residual of the lagged-far-field CG solve
+  double lagged_cutoff = 2.25;     // s' below which a pair's correction is solved every step (the pairwise
+                                   // engine's lubrication range); beyond it, lagged with the far field
+  bool lagged_pair_relative = true;  // A also carries FCM's own pair resistance for relative motion (contract)
+  // > 1: the caller lags the far field (multi-rate stepping, refresh_far_field), so full solves keep their defect g.
+  int far_field_every = 1;
   void validate() const;     // throws InputError naming the key (fcm.krylov_*)
 };
 
@@ -61,6 +80,8 @@ struct CoupledProblem {
   std::span<const Vec3> torques{};  // empty: zero
   double shear_rate = 0.0;
   double shear_offset = 0.0;
+  // false: the far field of the last full solve is reused (contract, "Lagged far field"), if one is stored.
+  bool refresh_far_field = true;
 };
 
 struct CoupledResult {
@@ -68,8 +89,8 @@ struct CoupledResult {
   std::vector<Mat3> stresslets;                       // FCM rigidity stresslets
   Mat3 subgrid_stress = Mat3::Zero();                 // sum of the sub-grid pair dipoles (not divided by V)
   std::vector<Vec3> contact_change_on_j;              // implicit contacts: per pair (SubgridLubrication)
-  int iterations = 0;                                 // GMRES iterations
-  int stokes_solves = 0;                              // iterations + 1 (the initial residual)
+  int iterations = 0;                                 // GMRES iterations (lagged far field: CG iterations)
+  int stokes_solves = 0;                              // iterations + 1 (the initial residual); lagged: 0
   double residual = 0.0;                              // |r| / scale at exit
 };
 
@@ -91,8 +112,9 @@ class CoupledMobility {
   const Eigen::VectorXd& warm_start() const { return x_; }
   // Everything the next warm start depends on, for checkpoints: a restarted run then repeats the uninterrupted one
   // bit for bit. 11 values per particle per stored solution: after `solve`, the last solution and, when
-  // extrapolating, the one before it (11 or 22 per particle); after `solve_parts`, the same for the shear part
-  // followed by the force part (22 or 44 per particle).
+  // extrapolating, the one before it (11 or 22 per particle), then the far-field defect g if kept (6 per
+  // particle: 17 or 28); after `solve_parts`, the same for the shear part followed by the force part (22, 44,
+  // 34 or 56 per particle).
   std::vector<double> warm_start_state() const;
   // `parts`: the next solves are solve_parts (imposed stress). A state that fits neither layout for n particles
   // (e.g. a restart that switches the flow control) is ignored: the next solve starts cold.
@@ -100,9 +122,12 @@ class CoupledMobility {
   void forget_warm_start() {
     x_.resize(0);
     x_older_.resize(0);
+    defect_.resize(0);
     shear_warm_ = {};
     force_warm_ = {};
   }
+  // Whether a lagged-far-field solve is possible (a defect g is stored for n particles; solve_parts: both parts).
+  bool has_far_field(std::size_t n) const;
   fcm::Solver& solver() { return solver_; }
   const fcm::Solver& solver() const { return solver_; }
   const KrylovParams& params() const { return params_; }
@@ -126,18 +151,30 @@ class CoupledMobility {
   // dV' (6 per particle) and the particle strain rates' coefficients e (5 per particle).
   void stokes(const CoupledProblem& pb, const Eigen::VectorXd& f, const Eigen::VectorXd& s, Eigen::VectorXd& dv,
               Eigen::VectorXd& e);
+  // The lagged-far-field solve (contract) for known forces f0; the near-field matrix is built unless
+  // lagged_matrix_ready_ (solve_parts: the second part reuses the first's).
+  void solve_lagged(const CoupledProblem& pb, SubgridLubrication* subgrid, const Eigen::VectorXd& f0,
+                    CoupledResult& out);
+  // lagged_ = A of the present configuration (contract), its CG factors too when `factor`.
+  void prepare_lagged_matrix(const CoupledProblem& pb, SubgridLubrication* subgrid, bool factor);
+  void write_result(const CoupledProblem& pb, SubgridLubrication* subgrid, CoupledResult& out) const;
 
   fcm::Solver solver_;
   KrylovParams params_;
-  Eigen::VectorXd x_, x_older_;
+  Eigen::VectorXd x_, x_older_, defect_;
   struct WarmStart {
-    Eigen::VectorXd last, older;
+    Eigen::VectorXd last, older, defect;
   };
   WarmStart shear_warm_, force_warm_;
   void exchange(WarmStart& w) {
     std::swap(x_, w.last);
     std::swap(x_older_, w.older);
+    std::swap(defect_, w.defect);
   }
+  bool lagged_matrix_ready_ = false;
+  bool keep_lagged_matrix_ = false;
+  SymmetricBlockMatrix lagged_;
+  PreconditionedConjugateGradient lagged_cg_;
   SymmetricBlockMatrix near_;
   PatternCholesky cholesky_;
   PreconditionedConjugateGradient inner_;

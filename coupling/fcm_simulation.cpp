@@ -20,6 +20,9 @@ coupling::KrylovParams krylov_params(const FcmParams& f) {
   k.max_iterations = f.max_iterations;
   k.warm_start = f.warm_start;
   k.preconditioner_cutoff = f.preconditioner_cutoff;
+  k.far_field_every = f.far_field_every;
+  k.lagged_cutoff = f.lagged_cutoff;
+  k.lagged_tolerance = f.lagged_tolerance;
   return k;
 }
 }  // namespace
@@ -125,6 +128,8 @@ void FcmSimulation::evaluate() {
   }
   subgrid_seconds_ += omp_get_wtime() - t0;
   solve_velocities();
+  ++evaluated_steps_;
+  total_stokes_solves_ += result_.stokes_solves;
   double max_speed = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     p.velocity[i] = result_.velocities[i];
@@ -170,6 +175,8 @@ void FcmSimulation::solve_velocities() {
   const std::size_t n = p.size();
   const PairSums& sums = contacts_.sums();
   coupling::CoupledProblem pb{p.position, p.radius, sums.force, sums.torque, rate_, box_.shear_offset()};
+  // Full solves at multiples of far_field_every (by step number, so a restart keeps the schedule).
+  pb.refresh_far_field = fcm_.far_field_every <= 1 || state_.step % fcm_.far_field_every == 0;
   try {
     if (params_.control == FlowControl::rate) {
       pb.shear_rate = rate_ = params_.shear_rate;

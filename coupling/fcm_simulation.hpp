@@ -41,6 +41,11 @@ struct FcmParams {
   bool warm_start = true;          // start from the previous steps' velocities and stresslets (extrapolated);
                                    // SimulationState::warm_start holds 11 or 22 values per particle
   double preconditioner_cutoff = 2.2;  // s' below which pairs enter the GMRES near-field preconditioner
+  // Multi-rate stepping: the full FCM solve at steps that are multiples of this, the lagged far field between
+  // (coupled_mobility.hpp "Lagged far field"; 1: every step; docs/coupling.md section 7 has the measured errors).
+  int far_field_every = 20;
+  double lagged_cutoff = 2.25;     // s' below which pair corrections are solved on lagged steps too
+  double lagged_tolerance = 1e-6;  // relative residual of the lagged steps' conjugate-gradient solve
   bool subgrid = true;             // sub-grid lubrication (false: FCM alone)
   double subgrid_cutoff = 3.5;     // s' = 2r/(a_i + a_j) beyond which the correction is zero
   double subgrid_taper_start = 2.5;        // s' where the correction starts tapering to zero (equal spheres)
@@ -76,6 +81,9 @@ class FcmSimulation {
   const FcmParams& fcm_params() const { return fcm_; }
   double solver_residual() const { return result_.residual; }
   int stokes_solves() const { return result_.stokes_solves; }
+  // Since construction (this invocation of a run; a restart counts afresh): steps evaluated and Stokes solves.
+  std::int64_t evaluated_steps() const { return evaluated_steps_; }
+  std::int64_t total_stokes_solves() const { return total_stokes_solves_; }
   std::size_t corrected_pairs() const { return subgrid_ ? subgrid_->corrected_pairs() : 0; }
   coupling::CoupledMobility& mobility() { return *mobility_; }
   // Wall-clock seconds of the contact-force stage and the sub-grid assembly since construction.
@@ -108,6 +116,7 @@ class FcmSimulation {
   double dt_ = 0.0;
   bool evaluated_ = false;
   double contact_seconds_ = 0.0, subgrid_seconds_ = 0.0;
+  std::int64_t evaluated_steps_ = 0, total_stokes_solves_ = 0;
 };
 
 }  // namespace suspend

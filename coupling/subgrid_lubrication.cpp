@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "core/error.hpp"
+#include "dem/hydro/exact_relative.hpp"
 
 namespace suspend::coupling {
 
@@ -82,6 +83,7 @@ void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const st
   delta_strain_.clear();
   link_pair_.clear();
   link_contact_.clear();
+  link_species_.clear();
   contact_.clear();
   pair_count_ = pairs.size();
   Mat3 e_hat = Mat3::Zero();
@@ -95,6 +97,7 @@ void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const st
     ResistanceScalars si, sj;
     scalars(species[pr.i], species[pr.j], g.gap(), si, sj);
     links_.push_back({pr.i, pr.j});
+    link_species_.push_back({species[pr.i], species[pr.j]});
     normal_.push_back(g.n);
     lever_i_.push_back(g.lever_i());
     lever_j_.push_back(g.lever_j());
@@ -193,11 +196,25 @@ Mat3 SubgridLubrication::stress(const Eigen::VectorXd& dv, double shear_rate) co
   return sum;
 }
 
+Matrix12 SubgridLubrication::fcm_relative_resistance(std::size_t k) const {
+  const auto [si, sj] = link_species_[k];
+  const SpeciesPair& p = pair_of(si, sj);
+  ResistanceScalars fi, fj, li, lj;
+  p.fcm.scalars(s_[k], fi, fj);  // tables are ordered small sphere first
+  if (p.swapped) std::swap(fi, fj);
+  const double a_i = species_radius_[si], a_j = species_radius_[sj];
+  hydro::exact_relative_part(a_i, a_j, fi, fj, li, lj);
+  return pair_resistance(pair_resistance_coefficients(a_i, a_j, li, lj), normal_[k]);
+}
+
 void SubgridLubrication::resistance_matrix(const std::vector<double>& radius, double s_max,
-                                           SymmetricBlockMatrix& m) {
+                                           SymmetricBlockMatrix& m, bool every_contact, bool fcm_relative) {
+  const auto kept = [&](std::size_t k) {
+    return s_[k] < s_max || (every_contact && !link_contact_.empty() && link_contact_[k] >= 0);
+  };
   near_links_.clear();
   for (std::size_t k = 0; k < links_.size(); ++k)
-    if (s_[k] < s_max) near_links_.push_back(links_[k]);
+    if (kept(k)) near_links_.push_back(links_[k]);
   m.set_structure(radius.size(), near_links_);
   auto& diag = m.diagonal();
   for (std::size_t i = 0; i < radius.size(); ++i) {
@@ -208,8 +225,9 @@ void SubgridLubrication::resistance_matrix(const std::vector<double>& radius, do
   auto& coupling = m.coupling();
   std::size_t c = 0;
   for (std::size_t k = 0; k < links_.size(); ++k) {
-    if (!(s_[k] < s_max)) continue;
+    if (!kept(k)) continue;
     Matrix12 r = pair_resistance(delta_r_[k], normal_[k]);
+    if (fcm_relative && s_[k] < s_max) r += fcm_relative_resistance(k);
     if (!link_contact_.empty() && link_contact_[k] >= 0) r += contact_[link_contact_[k]].resistance();
     diag[links_[k].i] += r.block<6, 6>(0, 0);
     diag[links_[k].j] += r.block<6, 6>(6, 6);

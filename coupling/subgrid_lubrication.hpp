@@ -22,6 +22,7 @@
 #pragma once
 #include <Eigen/Dense>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "coupling/exact_pair_resistance.hpp"
@@ -76,7 +77,12 @@ class SubgridLubrication {
   void contact_changes(const Eigen::VectorXd& dv, double shear_rate, std::vector<Vec3>& change_on_j) const;
   // R_Stokes + sum Delta_R over the pairs with s' < s_max as a symmetric block matrix (the Krylov preconditioner),
   // R_Stokes = diag(6 pi a, 8 pi a^3). Restricting it to the close pairs keeps its Cholesky factor sparse.
-  void resistance_matrix(const std::vector<double>& radius, double s_max, SymmetricBlockMatrix& m);
+  // every_contact: pairs with an implicit contact step enter at any s'. fcm_relative: the pairs with s' < s_max
+  // also carry P (R_fcm - D) P, the relative-motion part of what FCM resolves of the pair (R_fcm: FcmPairTable, D:
+  // the drag, P: the projector of dem/hydro/exact_relative.hpp), so that with Delta_R each pair's relative motion
+  // meets its exact two-sphere resistance (the lagged-far-field system, coupled_mobility.hpp).
+  void resistance_matrix(const std::vector<double>& radius, double s_max, SymmetricBlockMatrix& m,
+                         bool every_contact = false, bool fcm_relative = false);
 
  private:
   struct SpeciesPair {
@@ -86,6 +92,7 @@ class SubgridLubrication {
   };
   const SpeciesPair& pair_of(int si, int sj) const { return pairs_[si * species_radius_.size() + sj]; }
   Vector12 pair_forces(std::size_t link, const Eigen::VectorXd& dv, double shear_rate) const;
+  Matrix12 fcm_relative_resistance(std::size_t link) const;  // P (R_fcm - D) P of a link
   // -dt S u_c of a link with a contact step.
   Vec3 contact_change(std::size_t link, const Eigen::VectorXd& dv, double shear_rate) const;
 
@@ -106,6 +113,7 @@ class SubgridLubrication {
   std::vector<std::uint32_t> link_pair_;  // index of each link's pair in the assembled list
   std::size_t pair_count_ = 0;
   std::vector<std::int32_t> link_contact_;  // per link: its contact step, or -1
+  std::vector<std::pair<int, int>> link_species_;
   std::vector<ContactStep> contact_;        // ambient contact velocity for unit shear rate
 };
 

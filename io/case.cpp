@@ -137,6 +137,9 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
       f.truncation_widths = m.number("truncation_widths", f.truncation_widths, Range::closed(2.0, 8.0));
       f.krylov_tolerance = m.number("tolerance", f.krylov_tolerance, Range::open(0.0, 1.0));
       f.max_iterations = static_cast<int>(m.integer("max_iterations", f.max_iterations, 1, 100'000));
+      f.far_field_every = static_cast<int>(m.integer("far_field_every", f.far_field_every, 1, 1000));
+      f.lagged_cutoff = m.number("lagged_cutoff", f.lagged_cutoff, Range::closed(2.0, 10.0));
+      f.lagged_tolerance = m.number("lagged_tolerance", f.lagged_tolerance, Range::open(0.0, 1.0));
       f.subgrid = m.boolean("subgrid", f.subgrid);
       f.subgrid_cutoff = m.number("subgrid_cutoff", f.subgrid_cutoff, Range::open(2.0, 10.0));
       f.cache_dir = m.text("cache_dir", default_fcm_cache_dir());
@@ -286,6 +289,9 @@ YAML::Node to_yaml(const Case& c) {
     m["truncation_widths"] = number_node(c.fcm.truncation_widths);
     m["tolerance"] = number_node(c.fcm.krylov_tolerance);
     m["max_iterations"] = c.fcm.max_iterations;
+    m["far_field_every"] = c.fcm.far_field_every;
+    m["lagged_cutoff"] = number_node(c.fcm.lagged_cutoff);
+    m["lagged_tolerance"] = number_node(c.fcm.lagged_tolerance);
     m["subgrid"] = c.fcm.subgrid;
     m["subgrid_cutoff"] = number_node(c.fcm.subgrid_cutoff);
     m["cache_dir"] = c.fcm.cache_dir;

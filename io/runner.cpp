@@ -187,6 +187,11 @@ int run_case(const Case& c, const RunOptions& o) {
                                 average_from, c.simulation.control == FlowControl::stress,
                                 adhesion_force(c.simulation.contact)});
       summary.update(extra);
+      if constexpr (requires { sim.total_stokes_solves(); }) {
+        const auto steps = sim.evaluated_steps(), solves = sim.total_stokes_solves();
+        summary["fcm"] = {{"steps", steps}, {"stokes_solves", solves},
+                          {"stokes_solves_per_step", steps > 0 ? static_cast<double>(solves) / steps : 0.0}};
+      }
       write_text_atomically(join(dir, "summary.json"), summary.dump(2) + "\n");
       return summary;
     };

@@ -6,12 +6,13 @@
 #   d   cross-validation (d) at G_adh = 20: crossval_adhesive.yaml, g_adh 20, gamma_bar 0.045 (phi 0.40, imposed rate)
 #   c   cross-validation (c) at phi 0.45: crossval_frictional.yaml, phi 0.45 (imposed rate)
 #   bi  paper 004's bidisperse campaign case at phi 0.50, sigma* = 2, mu_s 0.5 (imposed stress)
-# Prints per case and strain: steps, seconds, s/strain of each engine, the FCM/pairwise ratio, and FCM's mean
-# Stokes solves per step (series solver_iterations + 1).
+#   p30, p40, p45  the FCM campaign's case (cases/phim/fcm_campaign.yaml) at phi 0.30, 0.40, 0.45 and sigma* = 1
+# Prints per case and strain: steps, seconds, s/strain of each engine, the FCM/pairwise ratio, FCM's mean Stokes
+# solves per step (summary.json fcm.stokes_solves_per_step) and the core-hours of a 20-strain run at that rate.
 # Usage: tools/fcm_throughput.sh [STRAINS (default "0.3")] [CASES (default "d c bi")] [BUILD_DIR (default build)]
 #                               [EXTRA --set assignments for the FCM runs, e.g. "hydrodynamics.fcm.krylov_tolerance=1e-3"]
 set -euo pipefail
-if [[ ${1:-} == -h || ${1:-} == --help ]]; then sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0; fi
+if [[ ${1:-} == -h || ${1:-} == --help ]]; then awk 'NR > 1 && !/^#/ {exit} NR > 1 {sub(/^# ?/, ""); print}' "$0"; exit 0; fi
 root=$(cd "$(dirname "$0")/.." && pwd)
 strains=${1:-0.3}
 cases=${2:-d c bi}
@@ -28,14 +29,15 @@ case_args() {
     d) echo "$root/cases/validation/crossval_adhesive.yaml --set contact.g_adh=20 --set contact.gamma_bar=0.045" ;;
     c) echo "$root/cases/validation/crossval_frictional.yaml --set particles.phi=0.45" ;;
     bi) echo "$root/cases/phim/adhesive_bidisperse.yaml --set particles.phi=0.5 --set flow.shear_stress=2" ;;
-    *) echo "error: unknown case '$1' (d, c, bi)" >&2; exit 2 ;;
+    p30|p40|p45) echo "$root/cases/phim/adhesive_bidisperse.yaml --set particles.phi=0.${1#p} --set flow.shear_stress=1" ;;
+    *) echo "error: unknown case '$1' (d, c, bi, p30, p40, p45)" >&2; exit 2 ;;
   esac
 }
 for name in $cases; do case_args "$name" >/dev/null || exit 2; done
 fcm_sets=()
 for s in $extra; do fcm_sets+=(--set "$s"); done
 
-printf "%-4s %7s %-9s %8s %9s %10s %11s\n" case strain engine steps seconds "s/strain" "solves/step"
+printf "%-4s %7s %-9s %8s %9s %10s %11s %13s\n" case strain engine steps seconds "s/strain" "solves/step" "core-h/20str"
 for name in $cases; do
   read -r -a args <<<"$(case_args "$name")"
   "$bin" run "${args[@]}" --out "$work/$name-pack" --threads 1 --quiet --set run.strain=1e-6 \
@@ -55,13 +57,14 @@ for name in $cases; do
         --set run.strain="$strain" >/dev/null
       end=$(date +%s.%N)
       seconds[$engine]=$(/usr/bin/python3 -c "print($end - $start)")
-      /usr/bin/python3 - "$out/run.h5" "${seconds[$engine]}" "$name" "$strain" "$engine" <<'PY'
-import sys, h5py
-path, sec, name, strain, engine = sys.argv[1], float(sys.argv[2]), sys.argv[3], float(sys.argv[4]), sys.argv[5]
-s = h5py.File(path, "r")["series"]
-steps = int(s["step"][-1])
-solves = (s["solver_iterations"][:].mean() + 1) if engine == "fcm" else float("nan")
-print(f"{name:<4} {strain:7.3g} {engine:<9} {steps:8d} {sec:9.1f} {sec / strain:10.1f} {solves:11.2f}")
+      /usr/bin/python3 - "$out" "${seconds[$engine]}" "$name" "$strain" "$engine" <<'PY'
+import sys, json, h5py
+out, sec, name, strain, engine = sys.argv[1], float(sys.argv[2]), sys.argv[3], float(sys.argv[4]), sys.argv[5]
+steps = int(h5py.File(out + "/run.h5", "r")["series"]["step"][-1])
+summary = json.load(open(out + "/summary.json"))
+solves = summary["fcm"]["stokes_solves_per_step"] if engine == "fcm" else float("nan")
+print(f"{name:<4} {strain:7.3g} {engine:<9} {steps:8d} {sec:9.1f} {sec / strain:10.1f} {solves:11.2f} "
+      f"{sec / strain * 20 / 3600:13.2f}")
 PY
     done
     /usr/bin/python3 -c "print(f'{\"$name\":<4} {$strain:7.3g} ratio FCM/pairwise = {${seconds[fcm]} / ${seconds[pairwise]}:.2f}')"

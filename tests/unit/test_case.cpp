@@ -270,3 +270,22 @@ TEST(Case, KeysGivenTwiceAndTagsAreRefused) {
   EXPECT_NE(error_of(std::string(base) + "title: !!str suspension\n").find("title: YAML tags"), std::string::npos);
   EXPECT_EQ(error_of(std::string(base) + "title: \"quoted\"\n"), "");
 }
+
+TEST(Case, FcmMultiRateKeys) {
+  const Case d = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm}\n"), "");
+  EXPECT_EQ(d.fcm.far_field_every, 20);
+  EXPECT_DOUBLE_EQ(d.fcm.lagged_cutoff, 2.25);
+  EXPECT_DOUBLE_EQ(d.fcm.lagged_tolerance, 1e-6);
+  const Case f = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm, fcm: {far_field_every: 1, "
+                                                           "lagged_cutoff: 3.5, lagged_tolerance: 1e-8}}\n"), "");
+  EXPECT_EQ(f.fcm.far_field_every, 1);
+  EXPECT_DOUBLE_EQ(f.fcm.lagged_cutoff, 3.5);
+  EXPECT_DOUBLE_EQ(f.fcm.lagged_tolerance, 1e-8);
+  EXPECT_EQ(to_yaml_text(parse_case(to_yaml(f), "")), to_yaml_text(f));
+  EXPECT_NE(error_of(base, {"hydrodynamics.fcm.far_field_every=0"}).find("hydrodynamics.fcm.far_field_every"),
+            std::string::npos);
+  EXPECT_NE(error_of(base, {"hydrodynamics.fcm.lagged_cutoff=1.5"}).find("hydrodynamics.fcm.lagged_cutoff"),
+            std::string::npos);
+  EXPECT_NE(error_of(base, {"hydrodynamics.fcm.lagged_tolerance=0"}).find("hydrodynamics.fcm.lagged_tolerance"),
+            std::string::npos);
+}
