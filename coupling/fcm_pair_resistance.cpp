@@ -243,7 +243,11 @@ FcmPairTable FcmPairTable::load_or_compute(const FcmPairTableParams& params, con
   table.params_ = params;
   std::string path;
   if (!cache_dir.empty()) {
-    std::filesystem::create_directories(cache_dir);
+    std::error_code ec;
+    std::filesystem::create_directories(cache_dir, ec);
+    if (ec || !std::filesystem::is_directory(cache_dir))
+      throw InputError("hydrodynamics.fcm.cache_dir: cannot create the directory '" + cache_dir + "'" +
+                       (ec ? " (" + ec.message() + ")" : "") + "; give a writable folder");
     path = (std::filesystem::path(cache_dir) / table.file_name()).string();
     if (table.read(path, params)) {
       if (recomputed) *recomputed = false;
@@ -251,7 +255,14 @@ FcmPairTable FcmPairTable::load_or_compute(const FcmPairTableParams& params, con
     }
   }
   table = FcmPairTable(params);
-  if (!path.empty()) table.write(path);
+  if (!path.empty()) {
+    try {
+      table.write(path);
+    } catch (const std::exception& e) {
+      throw InputError("hydrodynamics.fcm.cache_dir: cannot write '" + path + "' (" + e.what() +
+                       "); give a writable folder");
+    }
+  }
   if (recomputed) *recomputed = true;
   return table;
 }

@@ -80,6 +80,9 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   c.source = source;
   SchemaReader top(root, "");
   c.title = top.text("title", "");
+  // The resolved case is an HDF5 attribute of run.h5 (64 kB at most, with every other key).
+  if (c.title.size() > 1000)
+    throw InputError("title: " + std::to_string(c.title.size()) + " characters; at most 1000 are allowed");
   read_particles(top.child("particles"), c);
 
   {

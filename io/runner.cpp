@@ -160,7 +160,13 @@ int run_case(const Case& c, const RunOptions& o) {
                      exact(state.strain) + "); raise it with --set run.strain=...");
   auto run = [&](auto& sim) -> int {
 
-    fs::create_directories(dir);
+    {
+      std::error_code ec;
+      fs::create_directories(dir, ec);
+      if (ec || !fs::is_directory(dir))
+        throw InputError("--out: cannot create the directory '" + dir.string() + "'" +
+                         (ec ? " (" + ec.message() + ")" : "") + "; give a writable folder");
+    }
     const std::string run_path = join(dir, "run.h5"), checkpoint_path = join(dir, "checkpoint.h5");
     RunFile file = restarting ? RunFile::reopen(run_path, clock.series_rows, clock.snapshots)
                               : RunFile::create(run_path, {to_yaml_text(c), threads});

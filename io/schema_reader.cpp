@@ -1,6 +1,8 @@
 #include "io/schema_reader.hpp"
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
 
 #include <algorithm>
@@ -190,6 +192,42 @@ std::string closest_word(const std::string& word, const std::vector<std::string>
   return best;
 }
 
+namespace {
+
+// yaml-cpp accepts a quoted scalar that runs to the end of the text unclosed (and swallows the rest of the file
+// into it), so every quoted scalar is checked for its closing quote in the source text.
+void check_quotes(const YAML::Node& n, const std::string& text, const std::string& path, const std::string& where) {
+  if (n.IsMap()) {
+    for (const auto& kv : n) {
+      const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
+      check_quotes(kv.first, text, path, where);
+      check_quotes(kv.second, text, path.empty() ? key : path + "." + key, where);
+    }
+  } else if (n.IsSequence()) {
+    for (std::size_t i = 0; i < n.size(); ++i) check_quotes(n[i], text, path + "[" + std::to_string(i) + "]", where);
+  } else if (n.IsScalar() && n.Tag() == "!") {
+    const YAML::Mark m = n.Mark();
+    if (m.pos < 0 || static_cast<std::size_t>(m.pos) >= text.size()) return;
+    const char q = text[static_cast<std::size_t>(m.pos)];
+    if (q != '"' && q != '\'') return;
+    for (std::size_t k = static_cast<std::size_t>(m.pos) + 1; k < text.size(); ++k) {
+      if (q == '"' && text[k] == '\\') {
+        ++k;
+      } else if (text[k] == q) {
+        if (q == '\'' && k + 1 < text.size() && text[k + 1] == '\'') {
+          ++k;  // '' inside single quotes is a quote
+        } else {
+          return;
+        }
+      }
+    }
+    throw InputError((path.empty() ? where : path) + ": the quoted text opened at line " + std::to_string(m.line + 1) +
+                     ", column " + std::to_string(m.column + 1) + " is never closed (add the closing " + q + ")");
+  }
+}
+
+}  // namespace
+
 YAML::Node load_yaml_document(const std::string& path, const std::string& what) {
   namespace fs = std::filesystem;
   if (!fs::exists(path)) throw InputError(path + ": " + what + " file not found");
@@ -205,6 +243,11 @@ YAML::Node load_yaml_document(const std::string& path, const std::string& what) 
     throw InputError(path + ": holds " + std::to_string(docs.size()) + " YAML documents (separated by ---); a " + what +
                      " file is one");
   YAML::Node root = docs.empty() || !docs[0] || docs[0].IsNull() ? YAML::Node(YAML::NodeType::Map) : docs[0];
+  {
+    std::ifstream in(path, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    check_quotes(root, text, "", path);
+  }
   check_yaml_structure(root);
   return root;
 }
@@ -249,6 +292,7 @@ void apply_override(YAML::Node& root, const std::string& assignment) {
   } catch (const YAML::Exception& e) {
     throw InputError("--set " + path + ": cannot parse value '" + value + "' (" + e.msg + ")");
   }
+  check_quotes(parsed, value, path, "--set " + path);
   check_yaml_structure(parsed, path);
   // yaml-cpp nodes are references: walk by building the chain of nodes explicitly.
   if (root.IsScalar() || root.IsSequence()) throw InputError("case file: expected a mapping of sections");

@@ -72,6 +72,16 @@ TEST(Cli, BadInputExitsWithTwoAndWritesNothing) {
   expect_input_error({"run", scratch(), "--out", out}, "is a directory", out);
   expect_input_error({"run", "/dev/null", "--out", out}, "not a regular file", out);
   expect_input_error({"--bogus"}, "--bogus: unknown option; suspend takes a subcommand first (run,", "");
+  // yaml-cpp would swallow the rest of the file into an unclosed quote ("particles.phi: missing").
+  expect_input_error({"check", write_case("quote.yaml", "title: \"abc\nparticles: {phi: 0.1, count: 10}\n")},
+                     "title: the quoted text opened at line 1, column 8 is never closed", "");
+  expect_input_error({"run", restart_case, "--out", out, "--set", "title=" + std::string(70000, 'a')},
+                     "title: 70000 characters; at most 1000 are allowed", out);
+  const std::string file = write_case("a_file", "");
+  expect_input_error({"run", restart_case, "--out", file + "/run"}, "--out: cannot create the directory", "");
+  expect_input_error({"run", restart_case, "--out", out, "--set", "hydrodynamics.model=fcm", "--set",
+                      "hydrodynamics.fcm.cache_dir=" + file + "/cache"},
+                     "hydrodynamics.fcm.cache_dir: cannot create the directory", out);
 }
 
 TEST(Cli, CheckPrintsTheResolvedCaseWithDerivedValues) {
