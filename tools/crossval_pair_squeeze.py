@@ -143,7 +143,7 @@ def main(argv):
               f"{100 * (c / p - 1):+12.2f}%  fcm vs exact {'ok' if exact_ok else 'FAIL'}, "
               f"fcm vs pairwise {'ok' if pairwise_ok else 'FAIL'}")
     print(f"X11A - X12A = 2 F / (6 pi a u) from {len(runs['pairwise'])} pairwise and {len(runs['fcm'])} FCM snapshots; "
-          f"tolerance {100 * tolerance:.0f}%")
+          f"tolerance {100 * tolerance:.2g}%")
     return 0 if ok else 1
 
 

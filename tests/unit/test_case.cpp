@@ -273,7 +273,7 @@ TEST(Case, KeysGivenTwiceAndTagsAreRefused) {
 
 TEST(Case, FcmMultiRateKeys) {
   const Case d = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm}\n"), "");
-  EXPECT_EQ(d.fcm.far_field_every, 20);
+  EXPECT_EQ(d.fcm.far_field_every, 10);
   EXPECT_DOUBLE_EQ(d.fcm.lagged_cutoff, 2.25);
   EXPECT_DOUBLE_EQ(d.fcm.lagged_tolerance, 1e-6);
   const Case f = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm, fcm: {far_field_every: 1, "

@@ -9,4 +9,5 @@ trap 'rm -rf "$work"' EXIT
 "$suspend" crossval "$src/cases/validation/crossval_pair_squeeze.yaml" --out "$work/cv" --threads 1 --quiet \
   --set "hydrodynamics.fcm.cache_dir=$cache" > "$work/log"
 # Debian's interpreter: it has python3-h5py (another python3 may come first on PATH).
-/usr/bin/python3 "$src/tools/crossval_pair_squeeze.py" "$work/cv"
+# Issue 14: FCM + correction within 0.5% of the exact squeeze function (measured <= 0.31%).
+/usr/bin/python3 "$src/tools/crossval_pair_squeeze.py" "$work/cv" --tolerance 0.005
