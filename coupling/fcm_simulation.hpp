@@ -43,7 +43,7 @@ struct FcmParams {
   double preconditioner_cutoff = 2.2;  // s' below which pairs enter the GMRES near-field preconditioner
   // Multi-rate stepping: the full FCM solve at steps that are multiples of this, the lagged far field between
   // (coupled_mobility.hpp "Lagged far field"; 1: every step; docs/coupling.md section 7 has the measured errors).
-  int far_field_every = 10;
+  int far_field_every = 1;
   double lagged_cutoff = 2.25;     // s' below which pair corrections are solved on lagged steps too
   double lagged_tolerance = 1e-6;  // relative residual of the lagged steps' conjugate-gradient solve
   bool subgrid = true;             // sub-grid lubrication (false: FCM alone)

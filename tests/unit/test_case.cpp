@@ -273,12 +273,12 @@ TEST(Case, KeysGivenTwiceAndTagsAreRefused) {
 
 TEST(Case, FcmMultiRateKeys) {
   const Case d = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm}\n"), "");
-  EXPECT_EQ(d.fcm.far_field_every, 10);
+  EXPECT_EQ(d.fcm.far_field_every, 1);
   EXPECT_DOUBLE_EQ(d.fcm.lagged_cutoff, 2.25);
   EXPECT_DOUBLE_EQ(d.fcm.lagged_tolerance, 1e-6);
-  const Case f = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm, fcm: {far_field_every: 1, "
+  const Case f = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm, fcm: {far_field_every: 10, "
                                                            "lagged_cutoff: 3.5, lagged_tolerance: 1e-8}}\n"), "");
-  EXPECT_EQ(f.fcm.far_field_every, 1);
+  EXPECT_EQ(f.fcm.far_field_every, 10);
   EXPECT_DOUBLE_EQ(f.fcm.lagged_cutoff, 3.5);
   EXPECT_DOUBLE_EQ(f.fcm.lagged_tolerance, 1e-8);
   EXPECT_EQ(to_yaml_text(parse_case(to_yaml(f), "")), to_yaml_text(f));
