@@ -80,14 +80,6 @@ void CoupledMobility::solve_parts(const CoupledProblem& problem, SubgridLubricat
   lagged_matrix_ready_ = false;
 }
 
-bool CoupledMobility::has_far_field(std::size_t n) const {
-  const Index nv = 6 * static_cast<Index>(n), nx = 11 * static_cast<Index>(n);
-  const auto kept = [&](const Eigen::VectorXd& g, const Eigen::VectorXd& x) { return g.size() == nv && x.size() == nx; };
-  if (shear_warm_.last.size() != 0 || shear_warm_.defect.size() != 0)
-    return kept(shear_warm_.defect, shear_warm_.last) && kept(force_warm_.defect, force_warm_.last);
-  return kept(defect_, x_);
-}
-
 namespace {
 
 void append(std::vector<double>& s, const Eigen::VectorXd& last, const Eigen::VectorXd& older,
@@ -193,8 +185,15 @@ void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgri
     x_older_.resize(0);
     defect_.resize(0);
   }
+  // Isolated-sphere drag diag(6 pi a, 8 pi a^3): the preconditioner's scale and the lagged system without pairs.
+  Eigen::VectorXd r_stokes(nv);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = pb.radii[i];
+    r_stokes.segment<3>(6 * static_cast<Index>(i)).setConstant(6.0 * pi * a);
+    r_stokes.segment<3>(6 * static_cast<Index>(i) + 3).setConstant(8.0 * pi * a * a * a);
+  }
   if (!pb.refresh_far_field && defect_.size() == nv) {
-    solve_lagged(pb, subgrid, f0, out);
+    solve_lagged(pb, subgrid, f0, r_stokes, out);
     return;
   }
   const Eigen::VectorXd last = x_;
@@ -204,11 +203,9 @@ void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgri
   if (params_.extrapolate && x_older_.size() == x_.size()) x_ = 2.0 * x_ - x_older_;
   // Preconditioner: (R_Stokes + sum Delta_R)^-1 R_Stokes on the velocities, the isolated stresslet on the strains.
   std::vector<double> radius(pb.radii.begin(), pb.radii.end());
-  Eigen::VectorXd r_stokes(nv), s_scale(ns);
+  Eigen::VectorXd s_scale(ns);
   for (std::size_t i = 0; i < n; ++i) {
     const double a = radius[i];
-    r_stokes.segment<3>(6 * static_cast<Index>(i)).setConstant(6.0 * pi * a);
-    r_stokes.segment<3>(6 * static_cast<Index>(i) + 3).setConstant(8.0 * pi * a * a * a);
     s_scale.segment<5>(5 * static_cast<Index>(i)).setConstant(20.0 / 3.0 * pi * a * a * a);
   }
   bool near_ok = false;
@@ -315,7 +312,7 @@ void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgri
 }
 
 void CoupledMobility::solve_lagged(const CoupledProblem& pb, SubgridLubrication* subgrid, const Eigen::VectorXd& f0,
-                                   CoupledResult& out) {
+                                   const Eigen::VectorXd& r_stokes, CoupledResult& out) {
   const std::size_t n = pb.positions.size();
   const Index nv = 6 * static_cast<Index>(n);
   const double t0 = omp_get_wtime();
@@ -338,12 +335,7 @@ void CoupledMobility::solve_lagged(const CoupledProblem& pb, SubgridLubrication*
     out.iterations = cg.iterations;
     out.residual = cg.residual;
   } else {
-    for (std::size_t i = 0; i < n; ++i) {
-      const double a = pb.radii[i];
-      sol.segment<3>(6 * static_cast<Index>(i)) = rhs.segment<3>(6 * static_cast<Index>(i)) / (6.0 * pi * a);
-      sol.segment<3>(6 * static_cast<Index>(i) + 3) =
-          rhs.segment<3>(6 * static_cast<Index>(i) + 3) / (8.0 * pi * a * a * a);
-    }
+    sol = rhs.cwiseQuotient(r_stokes);
   }
   if (!sol.allFinite()) throw NumericalError("lagged-far-field solve: non-finite solution");
   timings_.subgrid += omp_get_wtime() - t0;
@@ -356,7 +348,7 @@ void CoupledMobility::solve_lagged(const CoupledProblem& pb, SubgridLubrication*
 void CoupledMobility::prepare_lagged_matrix(const CoupledProblem& pb, SubgridLubrication* subgrid, bool factor) {
   if (!subgrid || subgrid->corrected_pairs() == 0) return;
   const std::vector<double> radius(pb.radii.begin(), pb.radii.end());
-  subgrid->resistance_matrix(radius, params_.lagged_cutoff, lagged_, true, params_.lagged_pair_relative);
+  subgrid->resistance_matrix(radius, params_.lagged_cutoff, lagged_, true, true);
   if (factor) lagged_cg_.prepare(lagged_);  // throws NumericalError if a diagonal block is not positive definite
 }
 

@@ -24,17 +24,18 @@
 //  * Warm start: the previous solution if the particle count matches (set_warm_start for restarts), or, with
 //    `extrapolate` and two previous solutions, 2 x_n - x_{n-1} (the particles move smoothly; steps of similar size).
 //  * Lagged far field (multi-rate stepping; CoupledProblem::refresh_far_field = false): no Stokes solve. With the
-//    near-field resistance A = R_Stokes + sum'' Delta_R (sum'' over the corrected pairs with s' < lagged_cutoff
-//    and every implicit contact step), the far field of the last full solve is kept as its defect
-//        g = A_r dV_r - f0_r = R_Stokes dV_r - F_r - sum''' Delta_R dV_r        (sum''': the other corrected pairs),
-//    the force per particle that FCM and the wider corrections add to isolated-sphere drag, and the velocities
+//    near-field resistance A = R_Stokes + sum'' [Delta_R + P (R_fcm,pair - D) P] + the implicit contact steps
+//    (sum'' over the corrected pairs with s' < lagged_cutoff; P (R_fcm,pair - D) P: FCM's own pair resistance for
+//    relative motion, SubgridLubrication::resistance_matrix), the far field of the last full solve is kept as
+//    its defect g = A_r dV_r - f0_r,
+//    the force per particle that FCM and the wider corrections add to the near-field model, and the velocities
 //    solve the sparse system of the present configuration
 //        A dV = f0 + g
 //    by block-SGS conjugate gradients to lagged_tolerance (relative). Sub-grid lubrication of the close pairs,
 //    implicit contact steps and all strain forces are those of the present step, so every close pair keeps its
 //    exact resistance; g and the FCM stresslets are those of the last full solve. With g of the present
 //    configuration this is the full solution, so the error is the drift of g over the lag (docs/coupling.md
-//    section 7). Without a stored g (cold start, another particle count) the solve is full. solve_parts keeps one
+//    section 3b). Without a stored g (cold start, another particle count) the solve is full. solve_parts keeps one
 //    g per part.
 // Units: eta = 1, lengths in a_1.
 #pragma once
@@ -67,7 +68,6 @@ struct KrylovParams {
   double lagged_tolerance = 1e-6;  // relative residual of the lagged-far-field CG solve
   double lagged_cutoff = 2.25;     // s' below which a pair's correction is solved every step (the pairwise
                                    // engine's lubrication range); beyond it, lagged with the far field
-  bool lagged_pair_relative = true;  // A also carries FCM's own pair resistance for relative motion (contract)
   // > 1: the caller lags the far field (multi-rate stepping, refresh_far_field), so full solves keep their defect g.
   int far_field_every = 1;
   void validate() const;     // throws InputError naming the key (fcm.krylov_*)
@@ -126,8 +126,6 @@ class CoupledMobility {
     shear_warm_ = {};
     force_warm_ = {};
   }
-  // Whether a lagged-far-field solve is possible (a defect g is stored for n particles; solve_parts: both parts).
-  bool has_far_field(std::size_t n) const;
   fcm::Solver& solver() { return solver_; }
   const fcm::Solver& solver() const { return solver_; }
   const KrylovParams& params() const { return params_; }
@@ -154,7 +152,7 @@ class CoupledMobility {
   // The lagged-far-field solve (contract) for known forces f0; the near-field matrix is built unless
   // lagged_matrix_ready_ (solve_parts: the second part reuses the first's).
   void solve_lagged(const CoupledProblem& pb, SubgridLubrication* subgrid, const Eigen::VectorXd& f0,
-                    CoupledResult& out);
+                    const Eigen::VectorXd& r_stokes, CoupledResult& out);
   // lagged_ = A of the present configuration (contract), its CG factors too when `factor`.
   void prepare_lagged_matrix(const CoupledProblem& pb, SubgridLubrication* subgrid, bool factor);
   void write_result(const CoupledProblem& pb, SubgridLubrication* subgrid, CoupledResult& out) const;

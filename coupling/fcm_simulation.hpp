@@ -39,10 +39,10 @@ struct FcmParams {
   double krylov_tolerance = 1e-4;  // relative residual of the coupled solve (coupled_mobility.hpp)
   int max_iterations = 200;        // GMRES iterations (one Stokes solve each) before NumericalError
   bool warm_start = true;          // start from the previous steps' velocities and stresslets (extrapolated);
-                                   // SimulationState::warm_start holds 11 or 22 values per particle
+                                   // SimulationState::warm_start: CoupledMobility::warm_start_state
   double preconditioner_cutoff = 2.2;  // s' below which pairs enter the GMRES near-field preconditioner
   // Multi-rate stepping: the full FCM solve at steps that are multiples of this, the lagged far field between
-  // (coupled_mobility.hpp "Lagged far field"; 1: every step; docs/coupling.md section 7 has the measured errors).
+  // (coupled_mobility.hpp "Lagged far field"; 1: every step; docs/coupling.md section 3b has the measured errors).
   int far_field_every = 1;
   double lagged_cutoff = 2.25;     // s' below which pair corrections are solved on lagged steps too
   double lagged_tolerance = 1e-6;  // relative residual of the lagged steps' conjugate-gradient solve

@@ -195,35 +195,26 @@ std::string closest_word(const std::string& word, const std::vector<std::string>
 namespace {
 
 // yaml-cpp accepts a quoted scalar that runs to the end of the text unclosed (and swallows the rest of the file
-// into it), so every quoted scalar is checked for its closing quote in the source text.
-void check_quotes(const YAML::Node& n, const std::string& text, const std::string& path, const std::string& where) {
-  if (n.IsMap()) {
-    for (const auto& kv : n) {
-      const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
-      check_quotes(kv.first, text, path, where);
-      check_quotes(kv.second, text, path.empty() ? key : path + "." + key, where);
-    }
-  } else if (n.IsSequence()) {
-    for (std::size_t i = 0; i < n.size(); ++i) check_quotes(n[i], text, path + "[" + std::to_string(i) + "]", where);
-  } else if (n.IsScalar() && n.Tag() == "!") {
-    const YAML::Mark m = n.Mark();
-    if (m.pos < 0 || static_cast<std::size_t>(m.pos) >= text.size()) return;
-    const char q = text[static_cast<std::size_t>(m.pos)];
-    if (q != '"' && q != '\'') return;
-    for (std::size_t k = static_cast<std::size_t>(m.pos) + 1; k < text.size(); ++k) {
-      if (q == '"' && text[k] == '\\') {
-        ++k;
-      } else if (text[k] == q) {
-        if (q == '\'' && k + 1 < text.size() && text[k + 1] == '\'') {
-          ++k;  // '' inside single quotes is a quote
-        } else {
-          return;
-        }
+// into it), so a quoted scalar's closing quote is looked for in the source text it was parsed from.
+void check_closing_quote(const YAML::Node& n, const std::string& source, const std::string& where) {
+  if (source.empty() || n.Tag() != "!") return;
+  const YAML::Mark m = n.Mark();
+  if (m.pos < 0 || static_cast<std::size_t>(m.pos) >= source.size()) return;
+  const char q = source[static_cast<std::size_t>(m.pos)];
+  if (q != '"' && q != '\'') return;
+  for (std::size_t k = static_cast<std::size_t>(m.pos) + 1; k < source.size(); ++k) {
+    if (q == '"' && source[k] == '\\') {
+      ++k;
+    } else if (source[k] == q) {
+      if (q == '\'' && k + 1 < source.size() && source[k + 1] == '\'') {
+        ++k;  // '' inside single quotes is a quote
+      } else {
+        return;
       }
     }
-    throw InputError((path.empty() ? where : path) + ": the quoted text opened at line " + std::to_string(m.line + 1) +
-                     ", column " + std::to_string(m.column + 1) + " is never closed (add the closing " + q + ")");
   }
+  throw InputError(where + ": the quoted text opened at line " + std::to_string(m.line + 1) + ", column " +
+                   std::to_string(m.column + 1) + " is never closed (add the closing " + q + ")");
 }
 
 }  // namespace
@@ -233,9 +224,12 @@ YAML::Node load_yaml_document(const std::string& path, const std::string& what) 
   if (!fs::exists(path)) throw InputError(path + ": " + what + " file not found");
   if (fs::is_directory(path)) throw InputError(path + ": is a directory, not a " + what + " file");
   if (!fs::is_regular_file(path)) throw InputError(path + ": not a regular file; a " + what + " file is YAML text");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot be read (permissions?)");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::vector<YAML::Node> docs;
   try {
-    docs = YAML::LoadAllFromFile(path);
+    docs = YAML::LoadAll(text);
   } catch (const YAML::Exception& e) {
     throw InputError(path + ": not valid YAML at line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
   }
@@ -243,17 +237,13 @@ YAML::Node load_yaml_document(const std::string& path, const std::string& what) 
     throw InputError(path + ": holds " + std::to_string(docs.size()) + " YAML documents (separated by ---); a " + what +
                      " file is one");
   YAML::Node root = docs.empty() || !docs[0] || docs[0].IsNull() ? YAML::Node(YAML::NodeType::Map) : docs[0];
-  {
-    std::ifstream in(path, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    check_quotes(root, text, "", path);
-  }
-  check_yaml_structure(root);
+  check_yaml_structure(root, "", text);
   return root;
 }
 
-void check_yaml_structure(const YAML::Node& n, const std::string& path) {
+void check_yaml_structure(const YAML::Node& n, const std::string& path, const std::string& source) {
   const std::string where = path.empty() ? "case file" : path;
+  if (n.IsScalar()) check_closing_quote(n, source, where);
   const std::string& tag = n.Tag();
   if (!tag.empty() && tag != "?" && tag != "!")
     throw InputError(where + ": YAML tags (" + tag + ") are not read; remove the tag and give the plain value");
@@ -263,12 +253,14 @@ void check_yaml_structure(const YAML::Node& n, const std::string& path) {
       const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
       const std::string child = path.empty() ? key : path + "." + key;
       if (!kv.first.IsScalar()) throw InputError(where + ": a key must be a plain word, not a list or mapping");
+      check_closing_quote(kv.first, source, where);
       if (!seen.insert(key).second)
         throw InputError(child + ": given twice in one mapping (YAML keeps only one; give it once)");
-      check_yaml_structure(kv.second, child);
+      check_yaml_structure(kv.second, child, source);
     }
   } else if (n.IsSequence()) {
-    for (std::size_t i = 0; i < n.size(); ++i) check_yaml_structure(n[i], path + "[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < n.size(); ++i)
+      check_yaml_structure(n[i], path + "[" + std::to_string(i) + "]", source);
   }
 }
 
@@ -292,8 +284,7 @@ void apply_override(YAML::Node& root, const std::string& assignment) {
   } catch (const YAML::Exception& e) {
     throw InputError("--set " + path + ": cannot parse value '" + value + "' (" + e.msg + ")");
   }
-  check_quotes(parsed, value, path, "--set " + path);
-  check_yaml_structure(parsed, path);
+  check_yaml_structure(parsed, path, value);
   // yaml-cpp nodes are references: walk by building the chain of nodes explicitly.
   if (root.IsScalar() || root.IsSequence()) throw InputError("case file: expected a mapping of sections");
   std::vector<YAML::Node> chain{root};

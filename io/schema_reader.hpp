@@ -70,8 +70,9 @@ class SchemaReader {
 YAML::Node load_yaml_document(const std::string& path, const std::string& what);
 
 // Refuses what YAML allows but a case cannot mean: a key given twice in one mapping (yaml-cpp would keep the first
-// silently), explicit tags (!!str 0.4), non-scalar keys. InputError names the key path.
-void check_yaml_structure(const YAML::Node& n, const std::string& path = "");
+// silently), explicit tags (!!str 0.4), non-scalar keys, and, given the `source` text n was parsed from, a quoted
+// scalar never closed (yaml-cpp runs it to the end of the text). InputError names the key path.
+void check_yaml_structure(const YAML::Node& n, const std::string& path = "", const std::string& source = "");
 
 // Applies `--set a.b.c=VALUE` (VALUE parsed as YAML) to a case tree, creating mappings as needed.
 void apply_override(YAML::Node& root, const std::string& assignment);
