@@ -6,8 +6,10 @@
 #include "apps/commands.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
+#include "io/hdf5.hpp"
 
 int main(int argc, char** argv) {
+  suspend::io::h5::initialize_library();
   CLI::App app{"suspend: rheology of dense non-Brownian suspensions (lubrication-DEM and FCM)"};
   app.set_version_flag("--version", std::string("suspend ") + suspend::version + " (git " + suspend::git_commit + ")");
   app.require_subcommand(1);
@@ -41,6 +43,9 @@ int main(int argc, char** argv) {
   } catch (const suspend::NumericalError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return suspend::exit_numerical_error;
+  } catch (const suspend::OutputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return suspend::exit_output_error;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;

@@ -179,6 +179,7 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
     jobs.push_back({pid, p, Clock::now(), std::move(lock), r, false});
   };
 
+  bool disk_full = false;  // a point stopped with exit_output_error
   auto finish = [&](Job& j, int status) {
     const fs::path pd = point_dir(o.out_dir, *j.point);
     PointRecord& r = j.record;
@@ -193,6 +194,13 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
       r.message = reason;
     } else if ((code == 143 || code == 130) && stop_signal.load() && !j.over_budget) {
       r.status = "pending";  // stopped with the sweep: continues from its checkpoint next time
+    } else if (code == exit_output_error) {
+      // The disk is full for every point: none is started any more, this one continues once there is room.
+      r.status = "pending";
+      r.message = reason;
+      if (!disk_full) say("the disk is full (" + reason + "): no more points are started; once there is room, the "
+                          "same command continues the sweep");
+      disk_full = true;
     } else {
       r.status = "failed";
       r.message = j.over_budget ? "wall-clock budget of " + std::to_string(o.point_seconds) +
@@ -206,8 +214,8 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
   };
 
   bool forwarded = false;
-  while ((!todo.empty() && !stop_signal.load()) || !jobs.empty()) {
-    while (static_cast<int>(jobs.size()) < o.jobs && !todo.empty() && !stop_signal.load()) {
+  while ((!todo.empty() && !stop_signal.load() && !disk_full) || !jobs.empty()) {
+    while (static_cast<int>(jobs.size()) < o.jobs && !todo.empty() && !stop_signal.load() && !disk_full) {
       const Point* p = todo.front();
       todo.pop_front();
       start(p);
@@ -250,6 +258,7 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
   for (const auto& [s, n] : counts) line += (line.empty() ? "" : ", ") + std::to_string(n) + " " + s;
   say(line + "; table: " + (o.out_dir / "campaign.json").string() + ", " + (o.out_dir / "campaign.csv").string());
   if (const int sig = stop_signal.load()) return 128 + sig;
+  if (disk_full) return exit_output_error;
   return failed > 0 || counts["failed"] > 0 ? exit_numerical_error : 0;
 }
 

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/error.hpp"
+
 namespace suspend::io {
 
 namespace {
@@ -40,7 +42,7 @@ void write_text_atomically(const std::string& path, const std::string& text) {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out << text;
     out.close();
-    if (!out) throw std::runtime_error("cannot write " + tmp);
+    if (!out) throw OutputError("cannot write " + tmp);
   });
 }
 

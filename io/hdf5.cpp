@@ -1,7 +1,11 @@
 #include "io/hdf5.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
+
+#include "core/error.hpp"
 
 namespace suspend::io::h5 {
 
@@ -12,6 +16,13 @@ hid_t check(hid_t id, const std::string& what) {
 }
 void check_status(herr_t s, const std::string& what) {
   if (s < 0) throw std::runtime_error("HDF5: " + what);
+}
+// A write that fails once the file exists is an output failure (disk full, quota, file size limit): the system's
+// reason, which HDF5 leaves in errno, tells the user which.
+void check_written(herr_t s, const std::string& what) {
+  if (s >= 0) return;
+  const int e = errno;
+  throw OutputError("cannot " + what + (e ? std::string(" (") + std::strerror(e) + ")" : std::string()));
 }
 Handle dataspace(const std::vector<hsize_t>& shape) {
   return {check(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), "create dataspace"),
@@ -40,7 +51,8 @@ void write_any(hid_t loc, const std::string& name, const std::vector<T>& data, c
   Handle set(check(H5Dcreate2(loc, name.c_str(), type, space.id(), lcpl.id(), dcpl.id(), H5P_DEFAULT),
                    "create dataset " + name),
              H5Dclose);
-  if (n > 0) check_status(H5Dwrite(set.id(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write " + name);
+  errno = 0;
+  if (n > 0) check_written(H5Dwrite(set.id(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write " + name);
 }
 template <class T>
 std::vector<T> read_any(hid_t loc, const std::string& name, std::vector<hsize_t>* shape, hid_t type) {
@@ -89,6 +101,13 @@ void Handle::reset() {
 
 void install_error_handling() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
 
+void initialize_library() {
+  // HDF5's exit handler closes the files still open, and crashes in that clean-up on a file whose last flush failed
+  // (a full disk). Every file here is closed by its owner, so the handler is not needed.
+  H5dont_atexit();
+  install_error_handling();
+}
+
 File File::create(const std::string& path) {
   install_error_handling();
   File f;
@@ -108,7 +127,10 @@ File File::open(const std::string& path, bool writable) {
   return f;
 }
 
-void File::flush() const { check_status(H5Fflush(h_.id(), H5F_SCOPE_GLOBAL), "flush " + path_); }
+void File::flush() const {
+  errno = 0;
+  check_written(H5Fflush(h_.id(), H5F_SCOPE_GLOBAL), "write " + path_);
+}
 
 bool exists(hid_t loc, const std::string& path) {
   std::string prefix;
@@ -120,6 +142,38 @@ bool exists(hid_t loc, const std::string& path) {
     if (H5Lexists(loc, prefix.c_str(), H5P_DEFAULT) <= 0) return false;
   }
   return true;
+}
+
+bool openable(hid_t loc, const std::string& path) {
+  if (!exists(loc, path)) return false;
+  const hid_t id = H5Oopen(loc, path.c_str(), H5P_DEFAULT);
+  if (id < 0) return false;
+  H5Oclose(id);
+  return true;
+}
+
+void copy_object(hid_t from, hid_t to, const std::string& path) {
+  Handle lcpl(check(H5Pcreate(H5P_LINK_CREATE), "plist"), H5Pclose);
+  H5Pset_create_intermediate_group(lcpl.id(), 1);
+  errno = 0;
+  check_written(H5Ocopy(from, path.c_str(), to, path.c_str(), H5P_DEFAULT, lcpl.id()), "copy " + path);
+}
+
+void copy_root_attributes(hid_t from, hid_t to) {
+  const auto copy = [](hid_t loc, const char* name, const H5A_info_t*, void* data) -> herr_t {
+    const hid_t target = *static_cast<hid_t*>(data);
+    Handle a(H5Aopen(loc, name, H5P_DEFAULT), H5Aclose);
+    if (!a) return -1;
+    Handle type(H5Aget_type(a.id()), H5Tclose), space(H5Aget_space(a.id()), H5Sclose);
+    std::vector<char> value(H5Aget_storage_size(a.id()) + H5Tget_size(type.id()));
+    if (H5Aread(a.id(), type.id(), value.data()) < 0) return -1;
+    if (H5Aexists(target, name) > 0) H5Adelete(target, name);
+    Handle b(H5Acreate2(target, name, type.id(), space.id(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    return b && H5Awrite(b.id(), type.id(), value.data()) >= 0 ? 0 : -1;
+  };
+  hsize_t index = 0;
+  errno = 0;
+  check_written(H5Aiterate2(from, H5_INDEX_NAME, H5_ITER_NATIVE, &index, copy, &to), "copy the file attributes");
 }
 
 void create_groups(hid_t loc, const std::string& path) {
@@ -229,13 +283,44 @@ Table Table::open(hid_t loc, const std::string& name) {
 void Table::append(const double* row) {
   const int rank = vector_ ? 1 : 2;
   hsize_t newdims[2] = {rows_ + 1, width_};
-  check_status(H5Dset_extent(set_.id(), newdims), "extend table");
+  errno = 0;
+  check_written(H5Dset_extent(set_.id(), newdims), "extend a table");
   Handle file_space(check(H5Dget_space(set_.id()), "table space"), H5Sclose);
   hsize_t start[2] = {rows_, 0}, count[2] = {1, width_};
   H5Sselect_hyperslab(file_space.id(), H5S_SELECT_SET, start, nullptr, count, nullptr);
   Handle mem(check(H5Screate_simple(rank, count, nullptr), "row space"), H5Sclose);
-  check_status(H5Dwrite(set_.id(), H5T_NATIVE_DOUBLE, mem.id(), file_space.id(), H5P_DEFAULT, row), "append row");
+  check_written(H5Dwrite(set_.id(), H5T_NATIVE_DOUBLE, mem.id(), file_space.id(), H5P_DEFAULT, row),
+                "append a table row");
   ++rows_;
+}
+
+void Table::append_rows(const double* rows, hsize_t count) {
+  if (count == 0) return;
+  const int rank = vector_ ? 1 : 2;
+  hsize_t newdims[2] = {rows_ + count, width_};
+  errno = 0;
+  check_written(H5Dset_extent(set_.id(), newdims), "extend a table");
+  Handle file_space(check(H5Dget_space(set_.id()), "table space"), H5Sclose);
+  hsize_t start[2] = {rows_, 0}, size[2] = {count, width_};
+  H5Sselect_hyperslab(file_space.id(), H5S_SELECT_SET, start, nullptr, size, nullptr);
+  Handle mem(check(H5Screate_simple(rank, size, nullptr), "rows space"), H5Sclose);
+  check_written(H5Dwrite(set_.id(), H5T_NATIVE_DOUBLE, mem.id(), file_space.id(), H5P_DEFAULT, rows),
+                "append table rows");
+  rows_ += count;
+}
+
+std::vector<double> Table::read_rows(hsize_t count) const {
+  if (count > rows_) throw std::runtime_error("HDF5: a table has fewer rows than asked for");
+  std::vector<double> out(count * width_);
+  if (count == 0) return out;
+  const int rank = vector_ ? 1 : 2;
+  Handle file_space(check(H5Dget_space(set_.id()), "table space"), H5Sclose);
+  hsize_t start[2] = {0, 0}, size[2] = {count, width_};
+  H5Sselect_hyperslab(file_space.id(), H5S_SELECT_SET, start, nullptr, size, nullptr);
+  Handle mem(check(H5Screate_simple(rank, size, nullptr), "rows space"), H5Sclose);
+  check_status(H5Dread(set_.id(), H5T_NATIVE_DOUBLE, mem.id(), file_space.id(), H5P_DEFAULT, out.data()),
+               "read table rows");
+  return out;
 }
 
 void Table::truncate(hsize_t rows) {

@@ -43,6 +43,12 @@ class File {
 };
 
 bool exists(hid_t loc, const std::string& path);  // any link, nested paths allowed
+// Whether the object at `path` can be opened (a link can outlive its object in a file whose last write failed).
+bool openable(hid_t loc, const std::string& path);
+// Copies the object at `path` (a group with everything in it, or a dataset) from one file to the same path in another.
+void copy_object(hid_t from, hid_t to, const std::string& path);
+// Copies every attribute of the root group of one file to another's.
+void copy_root_attributes(hid_t from, hid_t to);
 void create_groups(hid_t loc, const std::string& path);  // like mkdir -p
 
 // Whole datasets: shape given explicitly (row-major).
@@ -68,6 +74,8 @@ class Table {
   static Table create(hid_t loc, const std::string& name, hsize_t width, hsize_t chunk_rows = 256);
   static Table open(hid_t loc, const std::string& name);
   void append(const double* row);
+  void append_rows(const double* rows, hsize_t count);  // count rows of width() values, row-major
+  std::vector<double> read_rows(hsize_t count) const;   // the first count rows, without touching later chunks
   void truncate(hsize_t rows);  // keep the first `rows` rows (restart)
   hsize_t rows() const { return rows_; }
   hsize_t width() const { return width_; }
@@ -78,7 +86,10 @@ class Table {
   bool vector_ = true;  // 1-D dataset when width == 1
 };
 
-// Turns HDF5's error stack into C++ exceptions (and silences its automatic printing).
+// Turns HDF5's error stack into C++ exceptions (and silences its automatic printing). Failed writes, flushes and
+// table extensions throw OutputError (core/error.hpp), other failures std::runtime_error.
 void install_error_handling();
+// Called by a program first, before any other HDF5 call: error handling, and no HDF5 exit handler.
+void initialize_library();
 
 }  // namespace suspend::io::h5

@@ -1,8 +1,10 @@
 #include "io/run_file.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
+#include "core/error.hpp"
 #include "core/version.hpp"
 
 namespace suspend::io {
@@ -54,6 +56,25 @@ RunFile RunFile::create(const std::string& path, const RunAttributes& attributes
 }
 
 RunFile RunFile::reopen(const std::string& path, std::size_t series_rows, std::size_t snapshots) {
+  try {
+    return reopen_intact(path, series_rows, snapshots);
+  } catch (const std::runtime_error& damaged) {
+    // A write that failed (disk full) can leave objects written after the checkpoint that cannot be read or
+    // deleted; what the checkpoint knew was complete when it was written. Rebuild from that, or report the damage.
+    try {
+      salvage(path, series_rows, snapshots);
+    } catch (const std::exception&) {
+      throw InputError("--restart: " + std::string(damaged.what()) +
+                       "; it could not be rebuilt (a write that failed damaged it). The checkpoint is whole: continue "
+                       "it into a new folder with --out NEW_DIR (its run.h5 starts at the checkpoint)");
+    }
+    RunFile r = reopen_intact(path, series_rows, snapshots);
+    r.salvaged_ = std::string(damaged.what());
+    return r;
+  }
+}
+
+RunFile RunFile::reopen_intact(const std::string& path, std::size_t series_rows, std::size_t snapshots) {
   RunFile r;
   r.file_ = h5::File::open(path, true);
   r.open_tables(false);
@@ -66,13 +87,31 @@ RunFile RunFile::reopen(const std::string& path, std::size_t series_rows, std::s
   for (std::size_t k = snapshots;; ++k) {
     const std::string g = snapshot_group(k);
     if (!h5::exists(r.file_.id(), g)) break;
-    H5Ldelete(r.file_.id(), g.c_str(), H5P_DEFAULT);
+    if (H5Ldelete(r.file_.id(), g.c_str(), H5P_DEFAULT) < 0)
+      throw std::runtime_error(path + ": snapshot " + std::to_string(k) + " after the checkpoint cannot be removed");
   }
   for (std::size_t k = 0; k < snapshots; ++k)
-    if (!h5::exists(r.file_.id(), snapshot_group(k)))
+    if (!h5::openable(r.file_.id(), snapshot_group(k)))
       throw std::runtime_error(path + ": snapshot " + std::to_string(k) + " that the checkpoint expects is missing");
   r.snapshots_ = snapshots;
   return r;
+}
+
+void RunFile::salvage(const std::string& path, std::size_t series_rows, std::size_t snapshots) {
+  const std::string rebuilt = path + ".rebuilt";
+  {
+    h5::File old = h5::File::open(path, false);
+    RunFile r = create(rebuilt, {});
+    h5::copy_root_attributes(old.id(), r.file_.id());
+    for (auto& [name, t] : r.tables_) {
+      const h5::Table from = h5::Table::open(old.id(), "series/" + name);
+      t.append_rows(from.read_rows(series_rows).data(), series_rows);
+    }
+    for (std::size_t k = 0; k < snapshots; ++k) h5::copy_object(old.id(), r.file_.id(), snapshot_group(k));
+    r.flush();
+  }
+  std::filesystem::rename(path, path + ".damaged");
+  std::filesystem::rename(rebuilt, path);
 }
 
 std::size_t RunFile::series_rows() const { return tables_.empty() ? 0 : tables_.begin()->second.rows(); }

@@ -55,7 +55,9 @@ struct RunAttributes {
 class RunFile {
  public:
   static RunFile create(const std::string& path, const RunAttributes& attributes);
-  // Reopens for a restart and cuts the series and snapshots back to the given counts.
+  // Reopens for a restart and cuts the series and snapshots back to the given counts. A file damaged by a failed
+  // write (disk full) is rebuilt from those rows and snapshots first, the damaged one kept as PATH.damaged
+  // (salvaged() then says what was wrong).
   static RunFile reopen(const std::string& path, std::size_t series_rows, std::size_t snapshots);
 
   void append(const SeriesRow& row);
@@ -67,12 +69,16 @@ class RunFile {
   std::size_t snapshot_count() const { return snapshots_; }
   std::vector<SnapshotInfo> snapshots() const;
   hid_t id() const { return file_.id(); }
+  const std::string& salvaged() const { return salvaged_; }
 
  private:
+  static RunFile reopen_intact(const std::string& path, std::size_t series_rows, std::size_t snapshots);
+  static void salvage(const std::string& path, std::size_t series_rows, std::size_t snapshots);
   void open_tables(bool create);
   h5::File file_;
   std::map<std::string, h5::Table> tables_;
   std::size_t snapshots_ = 0;
+  std::string salvaged_;
 };
 
 std::string snapshot_group(std::size_t index);

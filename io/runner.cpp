@@ -18,6 +18,7 @@
 #include "io/checkpoint.hpp"
 #include "io/exact_tables.hpp"
 #include "io/initial_configuration.hpp"
+#include "io/output_room.hpp"
 #include "io/progress.hpp"
 #include "io/run_file.hpp"
 #include "io/schema_reader.hpp"
@@ -115,6 +116,7 @@ int run_case(const Case& c, const RunOptions& o) {
 
   // Everything that can fail on input happens before the output directory is touched.
   const bool restarting = !o.restart.empty();
+  bool branching = false;  // restarting into a new folder
   fs::path dir = o.out_dir.empty() && restarting ? fs::path(o.restart).parent_path() : fs::path(o.out_dir);
   if (dir.empty()) throw InputError("--out: missing; give the directory to write the run to");
   SimulationState state;
@@ -126,8 +128,14 @@ int run_case(const Case& c, const RunOptions& o) {
   if (restarting) {
     if (!fs::is_regular_file(o.restart)) throw InputError("--restart: '" + o.restart + "' does not exist");
     Checkpoint cp = read_checkpoint(o.restart, fingerprint);
-    if (!fs::is_regular_file(dir / "run.h5"))
-      throw InputError("--restart: " + join(dir, "run.h5") + " is missing; the checkpoint continues that file");
+    // Into a folder without run.h5 (another --out than the checkpoint's): a new record that starts at the
+    // checkpoint's strain; into the checkpoint's own folder, its run.h5 continues.
+    const bool own_folder = fs::weakly_canonical(fs::absolute(dir)) ==
+                            fs::weakly_canonical(fs::absolute(o.restart)).parent_path();
+    branching = !own_folder && !fs::exists(dir / "run.h5");
+    if (!branching && !fs::is_regular_file(dir / "run.h5"))
+      throw InputError("--restart: " + join(dir, "run.h5") + " is missing; the checkpoint continues that file (or "
+                       "give another --out to continue into a new one)");
     for (std::size_t i = 0; i < cp.state.particles.size(); ++i)
       if (static_cast<std::size_t>(cp.state.particles.species[i]) >= c.particles.species.size())
         throw InputError("--restart: " + o.restart + ": particle " + std::to_string(i) + " is of species " +
@@ -135,13 +143,15 @@ int run_case(const Case& c, const RunOptions& o) {
                          std::to_string(c.particles.species.size()));
     state = std::move(cp.state);
     clock = cp.clock;
+    if (branching) clock.series_rows = clock.snapshots = 0;
     rng = deserialize_rng(cp.rng);
     box = c.particles.initial == "random" ? composition.box : build_initial_configuration(c).box;
     if (cp.threads != threads)
       std::cerr << "warning: the checkpoint was written with " << cp.threads << " threads and this run uses "
                 << threads << "; the continuation is exact only on the same thread count\n";
     std::ostringstream s;
-    s << "restarting from " << o.restart << " at strain " << state.strain << " (step " << state.step << ")";
+    s << "restarting from " << o.restart << " at strain " << state.strain << " (step " << state.step << ")"
+      << (branching ? "; a new run.h5 in " + dir.string() + " starts there" : std::string());
     origin = s.str();
   } else {
     if (fs::exists(dir / "run.h5"))
@@ -168,19 +178,27 @@ int run_case(const Case& c, const RunOptions& o) {
                          (ec ? " (" + ec.message() + ")" : "") + "; give a writable folder");
     }
     const std::string run_path = join(dir, "run.h5"), checkpoint_path = join(dir, "checkpoint.h5");
-    RunFile file = restarting ? RunFile::reopen(run_path, clock.series_rows, clock.snapshots)
+    RunFile file = restarting && !branching ? RunFile::reopen(run_path, clock.series_rows, clock.snapshots)
                               : RunFile::create(run_path, {to_yaml_text(c), threads});
     Progress progress(Progress::detect(o.quiet), c.run.strain, sim.state().strain);
     progress.message(origin);
+    if (!file.salvaged().empty())
+      progress.message("note: " + run_path + " was damaged (" + file.salvaged() + "); rebuilt from the " +
+                       std::to_string(clock.series_rows) + " series rows and " + std::to_string(clock.snapshots) +
+                       " snapshots the checkpoint knew, the damaged file kept as run.h5.damaged");
     progress.message("writing " + dir.string() + "/{run.h5, run.xdmf, summary.json, checkpoint.h5} on " +
                      std::to_string(threads) + " thread(s)");
     for (const std::string& note : exact_table_notes(c)) progress.message("note: " + note);
 
+    OutputRoom room;
+    // Strain of the last complete checkpoint on disk (none yet: negative).
+    double checkpoint_strain = restarting ? sim.state().strain : -1.0;
     auto save = [&] {
       file.flush();
       clock.series_rows = static_cast<std::int64_t>(file.series_rows());
       clock.snapshots = static_cast<std::int64_t>(file.snapshot_count());
       write_checkpoint(checkpoint_path, {sim.state_with_contacts(), clock, fingerprint, serialize(rng), threads});
+      checkpoint_strain = sim.state().strain;
     };
     auto finish_outputs = [&] {
       file.flush();
@@ -319,8 +337,28 @@ int run_case(const Case& c, const RunOptions& o) {
           clock.next_checkpoint = next_multiple(sim.state().strain, every.checkpoint_every);
           save();
           wall0 = std::chrono::steady_clock::now();
+          if (const std::optional<std::string> full = room.after_checkpoint(run_path, checkpoint_path)) {
+            progress.finish();
+            std::cerr << "error: " << *full << "; stopped at the checkpoint of strain " << sim.state().strain
+                      << " while everything is complete; once there is room, continue with: "
+                      << restart_command(c, checkpoint_path) << "\n";
+            return exit_output_error;
+          }
         }
       }
+    } catch (const OutputError& e) {
+      // Disk full or a size limit: nothing more can be written, so nothing more is tried; the checkpoint is
+      // replaced atomically, so the last complete one is still there.
+      progress.finish();
+      std::cerr << "error: " << e.what() << "\n";
+      if (checkpoint_strain >= 0.0)
+        std::cerr << "the last complete checkpoint (strain " << checkpoint_strain << ") is kept in " << checkpoint_path
+                  << "; once there is room, continue with: " << restart_command(c, checkpoint_path)
+                  << " (should run.h5 be damaged beyond repair, add --out NEW_DIR)\n";
+      else
+        std::cerr << "no checkpoint was written yet; once there is room, remove the incomplete " << run_path
+                  << " and start again\n";
+      return exit_output_error;
     } catch (const NumericalError& e) {
       progress.finish();
       // evaluate() found the state it was given bad: the step that made it is the failing one.

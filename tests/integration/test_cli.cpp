@@ -152,6 +152,35 @@ TEST(Cli, KilledAndRestartedRunEndsBitIdentical) {
   EXPECT_EQ(ta.str(), tb.str());
 }
 
+// A checkpoint continued into a new folder (--out without run.h5) goes on exactly as in its own folder; the new
+// run.h5 starts at the checkpoint, the old folder is left alone (the way on after a full disk damaged run.h5).
+TEST(Cli, RestartIntoANewFolderContinuesTheSameWay) {
+  const std::string c = fresh_dir("branch_c"), d = fresh_dir("branch_d");
+  const std::vector<std::string> small = {"--threads", "1", "--quiet", "--set", "particles.count=50", "--set",
+                                          "run.average_from=0.05"};
+  auto with = [&](std::vector<std::string> args) {
+    args.insert(args.end(), small.begin(), small.end());
+    return args;
+  };
+  ASSERT_EQ(run(with({"run", restart_case, "--out", c, "--set", "run.strain=0.1"})).code, 0);
+  const std::size_t rows_before = [&] {
+    h5::File f = h5::File::open(c + "/run.h5", false);
+    return read_series(f.id(), "strain").size();
+  }();
+  const Result r = run(with({"run", restart_case, "--restart", c + "/checkpoint.h5", "--out", d, "--set", "run.strain=0.2"}));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Result in_place = run(with({"run", restart_case, "--restart", c + "/checkpoint.h5", "--set", "run.strain=0.2"}));
+  ASSERT_EQ(in_place.code, 0) << in_place.err;
+  h5::File fc = h5::File::open(c + "/checkpoint.h5", false), fd = h5::File::open(d + "/checkpoint.h5", false);
+  EXPECT_EQ(h5::read_doubles(fc.id(), "particles/position"), h5::read_doubles(fd.id(), "particles/position"));
+  h5::File rc = h5::File::open(c + "/run.h5", false), rd = h5::File::open(d + "/run.h5", false);
+  const std::vector<double> strain_c = read_series(rc.id(), "strain"), strain_d = read_series(rd.id(), "strain");
+  ASSERT_GT(strain_c.size(), rows_before);
+  ASSERT_FALSE(strain_d.empty());
+  EXPECT_GE(strain_d.front(), 0.1 - 1e-9);  // the new record starts at the checkpoint
+  EXPECT_EQ(std::vector<double>(strain_c.end() - static_cast<long>(strain_d.size()), strain_c.end()), strain_d);
+}
+
 TEST(Cli, InterruptWritesACheckpointAndStopsCleanly) {
   const std::string c = fresh_dir("interrupt");
   const pid_t pid = spawn(with_lighter({"run", restart_case, "--out", c, "--threads", "1", "--quiet", "--set",
