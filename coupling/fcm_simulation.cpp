@@ -145,10 +145,9 @@ void FcmSimulation::evaluate() {
 
   const double volume = box_.volume();
   stress_ = sums.virial;
-  std::vector<Vec3>& pair_force = contacts_.pair_forces();
   for (std::size_t k = 0; k < result_.contact_change_on_j.size(); ++k) {
     add_contact_change_virial(pairs[k].geometry, result_.contact_change_on_j[k], stress_);
-    pair_force[k] += result_.contact_change_on_j[k];
+    contacts_.add_contact_change(k, result_.contact_change_on_j[k]);
   }
   for (auto& m : stress_.part) m /= volume;
   fcm::MobilityResult fcm_part;

@@ -18,6 +18,7 @@
 // A step is transactional exactly as in PairwiseSimulation: evaluate() computes everything and may throw
 // NumericalError before anything moved; advance() moves the particles.
 #pragma once
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -61,6 +62,8 @@ class FcmSimulation {
 
   void evaluate();
   void advance();
+  // Shortens the step evaluate() chose (never lengthens it), e.g. so that the last step ends on run.strain.
+  void clip_time_step(double dt) { dt_ = std::min(dt_, dt); }
 
   SimulationState state_with_contacts() const;
   const SimulationState& state() const { return state_; }
@@ -76,6 +79,7 @@ class FcmSimulation {
   const std::vector<ActivePair>& active_pairs() const { return contacts_.pairs(); }
   const VerletList& neighbours() const { return contacts_.neighbours(); }
   const std::vector<Vec3>& pair_forces() const { return contacts_.pair_forces(); }
+  const std::vector<ContactRecord>& contact_records() const { return contacts_.records(); }
 
   // FCM-specific diagnostics.
   const FcmParams& fcm_params() const { return fcm_; }

@@ -26,7 +26,7 @@ std::optional<std::string> ContactStage::evaluate(const Particles& p, const Box&
   history_.gather(active_index_, pair_history_);
   with_law(law, [&](const auto& l) {
     accumulate_pair_forces(active_, p, image_velocity, l, last_dt, pair_history_, sums_, pair_force_, scratch_,
-                           stiffness ? &stiffness_ : nullptr);
+                           stiffness ? &stiffness_ : nullptr, &records_);
   });
   if (!(sums_.max_overlap > max_overlap)) return std::nullopt;
   std::ostringstream s;

@@ -41,8 +41,17 @@ class ContactStage {
   const PairSums& sums() const { return sums_; }
   const std::vector<ContactStiffness>& stiffness() const { return stiffness_; }
   // Force on j of each pair (same order as pairs()); the engines add the implicit contact changes.
-  std::vector<Vec3>& pair_forces() { return pair_force_; }
   const std::vector<Vec3>& pair_forces() const { return pair_force_; }
+  const std::vector<ContactRecord>& records() const { return records_; }
+  // The implicit contact step's change of pair k's contact force on j (normal and tangential parts by the pair's
+  // normal), added to its force and record.
+  void add_contact_change(std::size_t k, const Vec3& change_on_j) {
+    pair_force_[k] += change_on_j;
+    const Vec3& n = active_[k].geometry.n;
+    const Vec3 normal = n.dot(change_on_j) * n;
+    records_[k].normal += normal;
+    records_[k].tangential += change_on_j - normal;
+  }
   const VerletList& neighbours() const { return list_; }
   double range() const { return range_; }
 
@@ -55,6 +64,7 @@ class ContactStage {
   std::vector<PairHistory> pair_history_;
   std::vector<Vec3> pair_force_;
   std::vector<ContactStiffness> stiffness_;
+  std::vector<ContactRecord> records_;
   PairSums sums_;
   std::vector<PairSums> scratch_;
 };

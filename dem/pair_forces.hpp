@@ -42,6 +42,13 @@ struct PairSums {
   double mean_compliance() const { return elastic_contacts ? compliance_sum / static_cast<double>(elastic_contacts) : 0.0; }
 };
 
+// What a snapshot records of a pair: whether the contact law exerts a normal force on it (a contact, the
+// definition of PairSums::contacts), the contact law's normal and tangential force on j, and whether it slides.
+struct ContactRecord {
+  Vec3 normal = Vec3::Zero(), tangential = Vec3::Zero();
+  bool contact = false, sliding = false;
+};
+
 // Tangent stiffnesses of a pair's contact law at this step (PairForce::normal_stiffness, tangential_stiffness),
 // for the linearly implicit contact step.
 struct ContactStiffness {
@@ -62,7 +69,8 @@ template <class Law>
 void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particles& p, double image_velocity,
                             const Law& law, double dt, std::vector<PairHistory>& history, PairSums& sums,
                             std::vector<Vec3>& pair_force, std::vector<PairSums>& local,
-                            std::vector<ContactStiffness>* stiffness = nullptr) {
+                            std::vector<ContactStiffness>* stiffness = nullptr,
+                            std::vector<ContactRecord>* records = nullptr) {
   const std::size_t n_particles = p.size();
   // Small systems stay on one thread: a parallel region costs more than their whole loop (and far more when the
   // cores are shared). The split depends only on the pair count, so results stay reproducible.
@@ -71,6 +79,8 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
   resize_with_headroom(pair_force, active.size());
   if (stiffness) stiffness->resize(active.size());
   ContactStiffness* const pair_stiffness = stiffness ? stiffness->data() : nullptr;
+  if (records) resize_with_headroom(*records, active.size());
+  ContactRecord* const pair_record = records ? records->data() : nullptr;
   sums.force.resize(n_particles);
   sums.torque.resize(n_particles);
 #pragma omp parallel num_threads(nthreads)
@@ -134,7 +144,10 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
         if (f.on_j[c].squaredNorm() > 0.0) virial.part[c] -= sym_outer(pr.geometry.d, f.on_j[c]);
       // A contact: the contact law exerts a normal force (overlap for the spring laws, a gap below the roughness
       // height for Hertz + adhesion).
-      if (f.on_j[static_cast<std::size_t>(Contribution::contact_normal)].squaredNorm() > 0.0) ++contacts;
+      const bool contact = f[Contribution::contact_normal].squaredNorm() > 0.0;
+      if (contact) ++contacts;
+      if (pair_record)
+        pair_record[k] = {f[Contribution::contact_normal], f[Contribution::contact_tangential], contact, f.sliding};
       const double overlap = -pr.geometry.gap();
       if (overlap > max_overlap) {
         max_overlap = overlap;

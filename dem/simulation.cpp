@@ -227,8 +227,8 @@ void PairwiseSimulation::finish_stress(double rate) {
   if (params_.lubrication) {
     // Hydrodynamic and lubrication sums; with implicit contacts also the contacts' change over the step.
     for (std::size_t c = 0; c < contribution_count; ++c) stress_.part[c] += solve_.stress.part[c];
-    std::vector<Vec3>& pair_force = contacts_.pair_forces();
-    for (std::size_t k = 0; k < solve_.contact_change_on_j.size(); ++k) pair_force[k] += solve_.contact_change_on_j[k];
+    for (std::size_t k = 0; k < solve_.contact_change_on_j.size(); ++k)
+      contacts_.add_contact_change(k, solve_.contact_change_on_j[k]);
   } else {
     const hydro::WavyShear f = flow(rate);
     Mat3& h = stress_[Contribution::hydrodynamic];

@@ -89,6 +89,8 @@ class PairwiseSimulation {
   void evaluate();
   // Moves particles by the velocities of the last evaluate() over its time step; wraps; updates strain and time.
   void advance();
+  // Shortens the step evaluate() chose (never lengthens it), e.g. so that the last step ends on run.strain.
+  void clip_time_step(double dt) { dt_ = std::min(dt_, dt); }
 
   // The state, with the contact histories copied in (for checkpoints).
   SimulationState state_with_contacts() const;
@@ -108,6 +110,7 @@ class PairwiseSimulation {
   const VerletList& neighbours() const { return contacts_.neighbours(); }
   // Force on j of each active pair (same order as active_pairs()), for snapshots.
   const std::vector<Vec3>& pair_forces() const { return contacts_.pair_forces(); }
+  const std::vector<ContactRecord>& contact_records() const { return contacts_.records(); }
 
  private:
   hydro::WavyShear flow(double rate) const {

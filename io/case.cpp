@@ -8,6 +8,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <sstream>
 
 #include "io/contact_case.hpp"
 #include "io/schema_reader.hpp"
@@ -72,6 +73,43 @@ void read_particles(SchemaReader r, Case& c) {
   r.finish();
 }
 
+}  // namespace
+
+// The largest strain a step can take is known before the run: refuse a case that would need more steps than any
+// machine can take (a time step of 1e-300, an explicit contact stiffness of 1e308, a shear rate of 1e-12 with a
+// fixed step...). Imposed stress: the rate is at most Sigma / eta_0 (eta_r >= 1).
+namespace {
+void refuse_runs_without_progress(const Case& c) {
+  constexpr double max_steps = 1e9;
+  const SimulationParams& s = c.simulation;
+  const TimeStepParams& ts = s.time_step;
+  const bool stress = s.control == FlowControl::stress;
+  const double rate = stress ? std::abs(s.shear_stress) : std::abs(s.shear_rate);
+  const std::string rate_key = stress ? "flow.shear_stress (or sigma_star)" : "flow.shear_rate";
+  double step = 0.0;  // largest strain per step
+  std::string why;
+  if (ts.mode == TimeStepParams::Mode::fixed) {
+    step = rate * ts.fixed;
+    why = "run.time_step.fixed = " + exact(ts.fixed) + " at " + rate_key + " = " + exact(rate);
+  } else if (s.integrator == Integrator::overdamped && !ts.implicit_contacts) {
+    double a_min = 1.0;
+    for (const Species& sp : c.particles.species) a_min = std::min(a_min, sp.radius);
+    const double bound = ts.stability * 6.0 * std::numbers::pi * a_min / stiffness_scale(s.contact);
+    step = std::min(ts.max, rate * bound);
+    why = "explicit contacts of stiffness " + exact(stiffness_scale(s.contact)) + " (contact.*) limit a step to " +
+          exact(bound) + " time units (run.time_step.stability x 6 pi a_min / stiffness) at " + rate_key + " = " +
+          exact(rate);
+  } else {
+    return;
+  }
+  if (c.run.strain <= step * max_steps) return;
+  std::ostringstream m;
+  m << "run.strain = " << exact(c.run.strain) << " cannot be reached: with " << why
+    << ", a step advances the strain by at most " << step << ", so the run needs more than " << c.run.strain / step << " steps (allowed: at most "
+    << max_steps << "); raise the time step"
+    << (ts.mode == TimeStepParams::Mode::fixed ? "" : ", use run.time_step.contacts = implicit or softer contacts");
+  throw InputError(m.str());
+}
 }  // namespace
 
 Case parse_case(const YAML::Node& root, const std::string& source) {
@@ -245,6 +283,7 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
       throw InputError("run.integrator = inertial is not available with hydrodynamics.model = fcm (use overdamped)");
     c.fcm.validate();
   }
+  refuse_runs_without_progress(c);
   return c;
 }
 

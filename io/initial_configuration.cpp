@@ -1,11 +1,14 @@
 #include "io/initial_configuration.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "core/error.hpp"
 #include "io/hdf5.hpp"
+#include "io/memory_estimate.hpp"
 #include "io/schema_reader.hpp"
 
 namespace suspend::io {
@@ -13,13 +16,26 @@ namespace suspend::io {
 Composition composition_of(const Case& c) {
   Composition k;
   const std::vector<Species>& sp = c.particles.species;
+  double smallest = sp.front().radius;
+  for (const Species& s : sp) smallest = std::min(smallest, s.radius);
+  auto total = [](const std::vector<std::size_t>& counts) {
+    double n = 0.0;
+    for (std::size_t m : counts) n += static_cast<double>(m);
+    return n;
+  };
   if (c.particles.count) {
     k.counts = species_counts(sp, static_cast<std::size_t>(*c.particles.count));
+    double volume = 0.0;  // of the particles, before any per-particle array exists
+    for (std::size_t s = 0; s < sp.size(); ++s)
+      volume += static_cast<double>(k.counts[s]) * 4.0 / 3.0 * std::numbers::pi * std::pow(sp[s].radius, 3);
+    const double side = std::cbrt(volume / c.particles.phi);
+    refuse_what_cannot_fit(c, total(k.counts), Vec3(side, side, side), smallest);
     k.radius = species_radii(sp, k.counts);
     k.box = cube_for_volume_fraction(k.radius, c.particles.phi);
   } else {
     k.box = Box(*c.box);
     k.counts = species_counts(sp, c.particles.phi, k.box);
+    refuse_what_cannot_fit(c, total(k.counts), k.box.length(), smallest);
     k.radius = species_radii(sp, k.counts);
     if (k.radius.size() < 2)
       throw InputError("box: too small to hold two particles at particles.phi = " + exact(c.particles.phi));

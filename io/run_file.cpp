@@ -150,6 +150,12 @@ void RunFile::write_snapshot(const Snapshot& s) {
   const std::size_t m = s.contact_pairs.size() / 2;
   h5::write(file_.id(), g + "/contact_pairs", s.contact_pairs, {m, 2});
   h5::write(file_.id(), g + "/contact_force", s.contact_force, {m, 3});
+  if (s.contact_gap.size() == m) {  // the contacts' own quantities (a Snapshot built by hand may leave them out)
+    h5::write(file_.id(), g + "/contact_gap", s.contact_gap, {m});
+    h5::write(file_.id(), g + "/contact_normal_force", s.contact_normal_force, {m});
+    h5::write(file_.id(), g + "/contact_tangential_force", s.contact_tangential_force, {m, 3});
+    h5::write(file_.id(), g + "/contact_sliding", s.contact_sliding, {m});
+  }
   h5::set_attribute(file_.id(), g, "step", s.step);
   h5::set_attribute(file_.id(), g, "time", s.time);
   h5::set_attribute(file_.id(), g, "strain", s.strain);

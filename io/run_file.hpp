@@ -2,7 +2,8 @@
 //   /                      attributes: case (resolved YAML), version, git_commit, threads
 //   /series/{step,time,strain,shear_rate,dt,contacts,max_overlap,eta_r,N1,N2,Pi}      one row per record
 //   /series/stress/{total,hydrodynamic,lubrication,...}   (rows, 6): xx yy zz xy xz yz, units eta_0 gammadot_ref
-//   /snapshots/NNNNNN/{position,radius,species,velocity,angular_velocity,contact_pairs,contact_force}
+//   /snapshots/NNNNNN/{position,radius,species,velocity,angular_velocity,
+//                      contact_pairs,contact_force,contact_gap,contact_normal_force,contact_tangential_force,contact_sliding}
 //                          plus box (3 lengths); attributes: step, time, strain, shear_offset
 // The file grows during the run and is flushed at every checkpoint; a restart truncates it back to the rows and
 // snapshots the checkpoint knew about, so a killed-and-restarted run ends with the same file as an unbroken one.
@@ -37,8 +38,13 @@ struct Snapshot {
   double time = 0.0, strain = 0.0;
   Box box;
   const Particles* particles = nullptr;
-  std::vector<std::int64_t> contact_pairs;  // 2 per pair
-  std::vector<double> contact_force;        // 3 per pair: force on the second particle
+  // The contacts only (pairs on which the contact law exerts a normal force, docs/output.md), in pair order:
+  std::vector<std::int64_t> contact_pairs;    // 2 per contact
+  std::vector<double> contact_force;          // 3 per contact: every pair force on the second particle
+  std::vector<double> contact_gap;            // surface gap r - a_i - a_j (negative: overlap)
+  std::vector<double> contact_normal_force;   // contact law's normal force on j along n = d/|d| (> 0: repulsive)
+  std::vector<double> contact_tangential_force;  // 3 per contact: its tangential force on j
+  std::vector<std::int64_t> contact_sliding;  // 1 where the tangential force is at its Coulomb limit
 };
 
 struct SnapshotInfo {

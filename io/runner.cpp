@@ -65,10 +65,17 @@ Snapshot snapshot_of(const Sim& sim) {
   s.particles = &st.particles;
   const std::vector<Vec3>& f = sim.pair_forces();
   const auto& pairs = sim.active_pairs();
+  const std::vector<ContactRecord>& records = sim.contact_records();
   for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (!records[k].contact) continue;  // lubrication-range pairs without contact force are not contacts
+    const PairGeometry& g = pairs[k].geometry;
     s.contact_pairs.push_back(pairs[k].i);
     s.contact_pairs.push_back(pairs[k].j);
     for (int a = 0; a < 3; ++a) s.contact_force.push_back(f[k][a]);
+    s.contact_gap.push_back(g.gap());
+    s.contact_normal_force.push_back(records[k].normal.dot(g.n));
+    for (int a = 0; a < 3; ++a) s.contact_tangential_force.push_back(records[k].tangential[a]);
+    s.contact_sliding.push_back(records[k].sliding ? 1 : 0);
   }
   return s;
 }
@@ -254,6 +261,10 @@ int run_case(const Case& c, const RunOptions& o) {
     auto wall0 = std::chrono::steady_clock::now();
     install_stop_handlers();
     double stress_sum = 0.0, rate_sum = 0.0;  // running eta_r = <Sigma_xy> / <gammadot>
+    constexpr double max_steps = 1e9;           // as refuse_runs_without_progress (case.cpp)
+    constexpr int slow_steps_allowed = 1000;    // steps in a row at a pace beyond max_steps before the run stops
+    int slow_steps = 0;
+    double slow_start_strain = sim.state().strain;
     try {
       for (;;) {
         remember_step_start();
@@ -293,8 +304,25 @@ int run_case(const Case& c, const RunOptions& o) {
           break;
         }
 
+        // The last step ends on run.strain, not past it.
+        if (const double left = c.run.strain - strain; sim.shear_rate() * sim.time_step() > left)
+          sim.clip_time_step(left / sim.shear_rate());
         sim.advance();
         check_finite(sim.state());
+        // A step or rate that collapsed mid-run (the time step a case implies is checked before it starts).
+        if (std::abs(sim.state().strain - strain) * max_steps < c.run.strain) {
+          if (++slow_steps == slow_steps_allowed) {
+            std::ostringstream s;
+            s << "no progress: the last " << slow_steps << " steps advanced the strain by "
+              << std::abs(sim.state().strain - slow_start_strain) << " in all (time step " << sim.time_step()
+              << ", shear rate " << sim.shear_rate() << "); at this pace run.strain = " << c.run.strain
+              << " needs more than " << max_steps << " steps";
+            throw NumericalError(s.str());
+          }
+        } else {
+          slow_steps = 0;
+          slow_start_strain = sim.state().strain;
+        }
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
         if (const int sig = stop_signal.load()) {
           save();

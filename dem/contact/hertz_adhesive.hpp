@@ -116,6 +116,7 @@ class HertzAdhesive {
     // dF_n/d(delta): the Hertz tangent 1.5 k_n sqrt(delta), and the supplementary wall's while it acts.
     f.normal_stiffness = 1.5 * (p_.kn * std::sqrt(delta) + (s > 0.0 ? k_s_ * std::sqrt(s) : 0.0));
     f.tangential_stiffness = t.sliding || !(limit > 0.0) ? 0.0 : kt_;
+    f.sliding = t.sliding && limit > 0.0;
     return f;
   }
 

@@ -72,6 +72,7 @@ struct LinearSpringDashpot {
     f.add_tangential(g, t.force_on_j, Contribution::contact_tangential);
     f.normal_stiffness = p.kn;
     f.tangential_stiffness = t.sliding || !(limit > 0.0) ? 0.0 : p.kt;
+    f.sliding = t.sliding && limit > 0.0;
 
     rolling.apply(g, m, f_n, dt, h.rolling_stretch, f);
     return f;

@@ -61,6 +61,7 @@ struct PairForce {
   Vec3 torque_j = Vec3::Zero();
   double normal_stiffness = 0.0;
   double tangential_stiffness = 0.0;
+  bool sliding = false;  // the tangential force sits at its Coulomb limit (a frictional contact slides)
   PairForce() {
     for (auto& f : on_j) f.setZero();
   }

@@ -77,6 +77,19 @@ TEST(Cli, BadInputExitsWithTwoAndWritesNothing) {
                      "title: the quoted text opened at line 1, column 8 is never closed", "");
   expect_input_error({"run", restart_case, "--out", out, "--set", "title=" + std::string(70000, 'a')},
                      "title: 70000 characters; at most 1000 are allowed", out);
+  // What cannot run is refused before anything is allocated or written: no std::bad_alloc, no run that never ends.
+  expect_input_error({"run", restart_case, "--out", out, "--set", "particles.count=", "--set", "box.cube=2000"},
+                     "box: 5.863e+08 particles need at least 1.2 TB of memory", out);
+  expect_input_error({"run", restart_case, "--out", out, "--set", "hydrodynamics.model=fcm", "--set",
+                      "hydrodynamics.fcm.grid_spacing=0.001"},
+                     "hydrodynamics.fcm.grid_spacing: a grid of", out);
+  expect_input_error({"run", restart_case, "--out", out, "--set", "run.time_step={mode: fixed, fixed: 1e-300}"},
+                     "run.strain = 0.5 cannot be reached: with run.time_step.fixed = 1e-300", out);
+  expect_input_error({"run", restart_case, "--out", out, "--set", "contact.k_hat=1e308"},
+                     "cannot be reached: with explicit contacts of stiffness 1e+308", out);
+  expect_input_error({"run", restart_case, "--out", out, "--set", "flow.shear_rate=1e-12", "--set",
+                      "run.time_step={mode: fixed, fixed: 1e-3}"},
+                     "at flow.shear_rate = 1e-12, a step advances the strain by at most 1e-15", out);
   const std::string file = write_case("a_file", "");
   expect_input_error({"run", restart_case, "--out", file + "/run"}, "--out: cannot create the directory", "");
   expect_input_error({"run", restart_case, "--out", out, "--set", "hydrodynamics.model=fcm", "--set",
@@ -256,10 +269,12 @@ TEST(Cli, CrossvalRefusesAFolderOfAnotherCase) {
 }
 
 TEST(Cli, FailingRunKeepsTheStateBeforeTheFailingStep) {
-  // A fixed time step of 1e308 throws every particle to infinity in one step: a numerical failure (exit 3), never a
-  // finished run; the checkpoint holds the state before that step, which continues (and fails again) as it was.
+  // A fixed time step of 1e308 (towards a run.strain as large, so that the last-step clipping leaves it alone)
+  // throws every particle to infinity in one step: a numerical failure (exit 3), never a finished run; the checkpoint
+  // holds the state before that step, which continues (and fails again) as it was.
   const std::string c = fresh_dir("non_finite");
-  const std::vector<std::string> step = {"--set", "run.time_step={mode: fixed, fixed: 1.0e308}", "--quiet"};
+  const std::vector<std::string> step = {"--set", "run.time_step={mode: fixed, fixed: 1.0e308}", "--set",
+                                         "run.strain=1e308", "--quiet"};
   std::vector<std::string> args = {"run", restart_case, "--out", c};
   args.insert(args.end(), step.begin(), step.end());
   const Result r = run(args);
@@ -274,6 +289,79 @@ TEST(Cli, FailingRunKeepsTheStateBeforeTheFailingStep) {
   again.insert(again.end(), step.begin(), step.end());
   const Result r2 = run(again);
   EXPECT_EQ(r2.code, 3) << "the checkpoint is readable and finite: " << r2.err;
+}
+
+TEST(Cli, TheLastStepEndsOnRunStrain) {
+  // Steps of strain 0.03 towards run.strain = 0.1: three full steps and a last one of 0.01, never past 0.1.
+  const std::string c = fresh_dir("last_step");
+  const Result r = run({"run", restart_case, "--out", c, "--quiet", "--set", "particles.count=50", "--set",
+                        "run.time_step={mode: fixed, fixed: 0.03}", "--set", "run.strain=0.1", "--set",
+                        "run.average_from=0"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  h5::File cp = h5::File::open(c + "/checkpoint.h5", false);
+  EXPECT_NEAR(h5::double_attribute(cp.id(), ".", "strain"), 0.1, 1e-12);
+  EXPECT_EQ(h5::int_attribute(cp.id(), ".", "step"), 4);
+  h5::File f = h5::File::open(c + "/run.h5", false);
+  EXPECT_NEAR(read_series(f.id(), "strain").back(), 0.1, 1e-12);
+}
+
+// Snapshots list the contacts, and only them: as many rows as the `contacts` series counts at the same step, each
+// with its gap, normal and tangential force and sliding flag. Adhesive Hertz contacts (at gaps below the roughness
+// h_r) and frictional linear springs (at overlap, |F_t| <= mu F_n).
+TEST(Cli, SnapshotsListTheContactsWithTheirForces) {
+  struct Law {
+    std::string name;
+    std::vector<std::string> args;
+    double contact_gap, mu;  // mu: Coulomb limit |F_t| <= mu F_n to check (0: not this law's limit)
+  };
+  const std::vector<Law> laws = {
+      {"adhesive", {"run", SUSPEND_SOURCE_DIR "/cases/quickstart.yaml", "--set", "run.strain=0.05", "--set",
+                    "run.average_from=0", "--set", "box.cube=10"}, 5e-3, 0.0},  // limit mu (F_n + F_adh), implicit
+      {"spring", {"run", restart_case, "--set", "run.strain=0.1", "--set", "run.average_from=0", "--set",
+                  "particles.count=50", "--set", "particles.phi=0.55"}, 0.0, 1.0}};
+  for (const Law& law : laws) {
+    const std::string c = fresh_dir("contacts_" + law.name);
+    std::vector<std::string> args = law.args;
+    args.insert(args.end(), {"--out", c, "--quiet", "--threads", "1"});
+    const Result r = run(args);
+    ASSERT_EQ(r.code, 0) << r.err;
+    h5::File f = h5::File::open(c + "/run.h5", false);
+    std::size_t last = 0;
+    while (h5::exists(f.id(), snapshot_group(last + 1))) ++last;
+    const std::string g = snapshot_group(last);
+    const std::vector<double> gap = h5::read_doubles(f.id(), g + "/contact_gap");
+    const std::vector<double> fn = h5::read_doubles(f.id(), g + "/contact_normal_force");
+    const std::vector<double> ft = h5::read_doubles(f.id(), g + "/contact_tangential_force");
+    const std::vector<std::int64_t> sliding = h5::read_ints(f.id(), g + "/contact_sliding");
+    const std::vector<double> contacts = read_series(f.id(), "contacts");
+    ASSERT_GT(gap.size(), 10u) << law.name;
+    EXPECT_EQ(static_cast<double>(gap.size()), contacts.back()) << law.name << ": rows = the series' contacts";
+    EXPECT_EQ(h5::shape_of(f.id(), g + "/contact_pairs")[0], gap.size());
+    std::size_t slides = 0;  // reported, to see that both kinds occur
+    for (std::size_t k = 0; k < gap.size(); ++k) {
+      EXPECT_LT(gap[k], law.contact_gap) << law.name << " contact " << k;
+      EXPECT_GT(fn[k], 0.0) << law.name << " contact " << k;
+      slides += sliding[k] ? 1 : 0;
+      if (law.mu == 0.0) continue;
+      const double t = std::hypot(ft[3 * k], ft[3 * k + 1], ft[3 * k + 2]);
+      EXPECT_LE(t, law.mu * fn[k] * (1 + 1e-9) + 1e-12) << law.name << " contact " << k;
+      if (sliding[k]) {
+        EXPECT_NEAR(t, law.mu * fn[k], 1e-9 * fn[k]) << law.name << " sliding contact " << k;
+      }
+    }
+    std::printf("%s: %zu contacts, %zu sliding\n", law.name.c_str(), gap.size(), slides);
+  }
+}
+
+TEST(Cli, ARunWithoutProgressStopsWithACheckpoint) {
+  // A time step that collapses mid-run (here: a displacement bound of 1e-16 a_1) stops after 1000 such steps with
+  // exit 3, saying so, and keeps the state in a checkpoint, instead of running for ever.
+  const std::string c = fresh_dir("no_progress");
+  const Result r = run({"run", restart_case, "--out", c, "--quiet", "--set", "particles.count=30", "--set",
+                        "hydrodynamics.lubrication.enabled=false", "--set", "run.time_step.max_displacement=1e-16"});
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("no progress: the last 1000 steps advanced the strain by"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(c + "/checkpoint.h5"));
 }
 
 TEST(Cli, RunawayOverlapKeepsTheStateOfTheStepBefore) {
