@@ -25,6 +25,17 @@ std::string size_text(double bytes) {
 
 void refuse_what_cannot_fit(const Case& c, double particles, const Vec3& box_lengths, double smallest_radius,
                             double memory_bytes) {
+  // Positions are doubles and the neighbour search bins the box: a side beyond 1e6 a_1 (a count at a vanishing
+  // phi, or a box given outright) is no suspension this program can follow.
+  constexpr double largest_side = 1e6;
+  for (int a = 0; a < 3; ++a)
+    if (!(box_lengths[a] <= largest_side)) {
+      std::ostringstream m;
+      m << (c.particles.count ? "particles.phi" : "box") << ": the box side would be " << box_lengths[a]
+        << " a_1 (" << particles << " particles at phi = " << c.particles.phi << "); allowed: at most "
+        << largest_side << " a_1";
+      throw InputError(m.str());
+    }
   if (memory_bytes <= 0.0)
     memory_bytes = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
   const double for_particles = particles * bytes_per_particle;
