@@ -184,6 +184,7 @@ int run_case(const Case& c, const RunOptions& o) {
         throw InputError("--out: cannot create the directory '" + dir.string() + "'" +
                          (ec ? " (" + ec.message() + ")" : "") + "; give a writable folder");
     }
+    remove_stale_temporaries(dir.string());
     const std::string run_path = join(dir, "run.h5"), checkpoint_path = join(dir, "checkpoint.h5");
     RunFile file = restarting && !branching ? RunFile::reopen(run_path, clock.series_rows, clock.snapshots)
                               : RunFile::create(run_path, {to_yaml_text(c), threads});
@@ -402,9 +403,11 @@ int run_case(const Case& c, const RunOptions& o) {
       return exit_numerical_error;
     }
     progress.finish();
-    save();
+    // The summary before the last checkpoint: a run killed in between continues from the checkpoint before and
+    // writes it again; a checkpoint at run.strain always has its summary.json.
     finish_outputs();
     const nlohmann::json summary = write_summary(c.run.average_from, {{"status", "done"}});
+    save();
     file.close();
     if (o.quiet) return 0;
     // JSON has no NaN: an undefined mean or error (too few samples) is null there, nan here.
