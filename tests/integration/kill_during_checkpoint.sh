@@ -11,7 +11,7 @@ case_file=$(realpath "$2")
 RANDOM=${3:-1}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-args=(--set particles.count=50 --set run.strain=0.6 --set run.average_from=0.05 --set run.threads=1
+args=(--set particles.count=50 --set run.strain=1.5 --set run.average_from=0.05 --set run.threads=1
   --set run.output.checkpoint_every=0.002 --set run.output.series_every=0.002 --quiet)
 "$suspend" run "$case_file" --out "$work/ref" "${args[@]}"
 
