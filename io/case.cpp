@@ -10,6 +10,7 @@
 #include <optional>
 #include <sstream>
 
+#include "dem/integrate/time_step_control.hpp"
 #include "io/contact_case.hpp"
 #include "io/schema_reader.hpp"
 
@@ -80,7 +81,7 @@ void read_particles(SchemaReader r, Case& c) {
 // fixed step...). Imposed stress: the rate is at most Sigma / eta_0 (eta_r >= 1).
 namespace {
 void refuse_runs_without_progress(const Case& c) {
-  constexpr double max_steps = 1e9;
+  constexpr double max_steps = max_run_steps;
   const SimulationParams& s = c.simulation;
   const TimeStepParams& ts = s.time_step;
   const bool stress = s.control == FlowControl::stress;
@@ -94,7 +95,7 @@ void refuse_runs_without_progress(const Case& c) {
   } else if (s.integrator == Integrator::overdamped && !ts.implicit_contacts) {
     double a_min = 1.0;
     for (const Species& sp : c.particles.species) a_min = std::min(a_min, sp.radius);
-    const double bound = ts.stability * 6.0 * std::numbers::pi * a_min / stiffness_scale(s.contact);
+    const double bound = explicit_contact_time_step(ts, s.contact, a_min);
     step = std::min(ts.max, rate * bound);
     why = "explicit contacts of stiffness " + exact(stiffness_scale(s.contact)) + " (contact.*) limit a step to " +
           exact(bound) + " time units (run.time_step.stability x 6 pi a_min / stiffness) at " + rate_key + " = " +

@@ -280,19 +280,7 @@ Table Table::open(hid_t loc, const std::string& name) {
   return t;
 }
 
-void Table::append(const double* row) {
-  const int rank = vector_ ? 1 : 2;
-  hsize_t newdims[2] = {rows_ + 1, width_};
-  errno = 0;
-  check_written(H5Dset_extent(set_.id(), newdims), "extend a table");
-  Handle file_space(check(H5Dget_space(set_.id()), "table space"), H5Sclose);
-  hsize_t start[2] = {rows_, 0}, count[2] = {1, width_};
-  H5Sselect_hyperslab(file_space.id(), H5S_SELECT_SET, start, nullptr, count, nullptr);
-  Handle mem(check(H5Screate_simple(rank, count, nullptr), "row space"), H5Sclose);
-  check_written(H5Dwrite(set_.id(), H5T_NATIVE_DOUBLE, mem.id(), file_space.id(), H5P_DEFAULT, row),
-                "append a table row");
-  ++rows_;
-}
+void Table::append(const double* row) { append_rows(row, 1); }
 
 void Table::append_rows(const double* rows, hsize_t count) {
   if (count == 0) return;

@@ -14,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "core/rng.hpp"
+#include "dem/integrate/time_step_control.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/exact_tables.hpp"
@@ -200,7 +201,7 @@ int run_case(const Case& c, const RunOptions& o) {
 
     OutputRoom room;
     // Strain of the last complete checkpoint on disk (none yet: negative).
-    double checkpoint_strain = restarting ? sim.state().strain : -1.0;
+    double checkpoint_strain = restarting && !branching ? sim.state().strain : -1.0;
     auto save = [&] {
       file.flush();
       clock.series_rows = static_cast<std::int64_t>(file.series_rows());
@@ -262,7 +263,7 @@ int run_case(const Case& c, const RunOptions& o) {
     auto wall0 = std::chrono::steady_clock::now();
     install_stop_handlers();
     double stress_sum = 0.0, rate_sum = 0.0;  // running eta_r = <Sigma_xy> / <gammadot>
-    constexpr double max_steps = 1e9;           // as refuse_runs_without_progress (case.cpp)
+    constexpr double max_steps = max_run_steps;
     constexpr int slow_steps_allowed = 1000;    // steps in a row at a pace beyond max_steps before the run stops
     int slow_steps = 0;
     double slow_start_strain = sim.state().strain;

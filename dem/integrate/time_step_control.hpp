@@ -47,6 +47,15 @@ inline double contact_range(const ContactLaw& law) {
   return std::visit([](const auto& l) { return l.contact.range(); }, law);
 }
 
+// The most steps a run may need to reach run.strain: more is refused at check time (io/case.cpp) and stops a run
+// whose step collapsed (io/runner.cpp).
+inline constexpr double max_run_steps = 1e9;
+
+// Explicit contacts: the fastest contact relaxation bounds the step, dt <= stability x 6 pi eta a_min / k.
+inline double explicit_contact_time_step(const TimeStepParams& ts, const ContactLaw& law, double a_min) {
+  return ts.stability * 6.0 * std::numbers::pi * a_min / stiffness_scale(law);
+}
+
 // Adaptive overdamped step for shear rate `rate` and largest non-affine speed `max_speed` (of this step for
 // explicit contacts, of the last one for implicit contacts, whose step precedes the solve); `compliance`: the mean
 // contact compliance length (PairSums::mean_compliance; 0 without contacts).
@@ -60,7 +69,7 @@ inline double overdamped_time_step(const TimeStepParams& ts, const ContactLaw& l
   if (ts.implicit_contacts && compliance > 0.0)
     displacement = std::min(displacement, ts.displacement_per_compliance * compliance);
   if (max_speed > 0.0) dt = std::min(dt, displacement / max_speed);
-  const double explicit_bound = ts.stability * 6.0 * std::numbers::pi * a_min / stiffness_scale(law);
+  const double explicit_bound = explicit_contact_time_step(ts, law, a_min);
   if (!ts.implicit_contacts) return std::min(dt, explicit_bound);
   return last_dt > 0.0 ? std::min(dt, ts.growth * last_dt) : std::min(dt, explicit_bound);
 }
