@@ -15,4 +15,6 @@ void add_crossval_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 // `suspend phim`: Maron-Pierce fits of phi_m(sigma*) to a campaign table (apps/cmd_phim.cpp).
 void add_phim_command(CLI::App& app);
+// `suspend analyze`: contact network, clusters, fabric and distributions of a run's snapshots (apps/cmd_analyze.cpp).
+void add_analyze_command(CLI::App& app);
 }  // namespace suspend::app

@@ -1,0 +1,15 @@
+// `suspend analyze`'s record of one configuration as JSON (docs/output.md, "Microstructure"): the contact
+// numbers, clusters, tensors and distributions of contact_network.hpp, contact_stress.hpp and distributions.hpp.
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include "analysis/configuration.hpp"
+
+namespace suspend::analysis {
+
+struct ReportOptions {
+  bool distributions = true;  // forces, gaps, g(r) and g(x, y); false: the scalars, tensors and clusters only
+};
+nlohmann::ordered_json report(const Configuration& c, const ReportOptions& options = {});
+
+}  // namespace suspend::analysis

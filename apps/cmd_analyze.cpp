@@ -1,0 +1,100 @@
+// `suspend analyze RUN_DIR [--snapshot K|last|all] [--json] [--no-distributions]`: the microstructure of a run's
+// snapshots (analysis/report.hpp; docs/output.md, "Microstructure"): a line per snapshot, or with --json an array
+// of one object per snapshot.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/report.hpp"
+#include "apps/commands.hpp"
+#include "core/error.hpp"
+#include "io/hdf5.hpp"
+#include "io/snapshot_reader.hpp"
+
+namespace suspend::app {
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+namespace {
+
+std::vector<std::size_t> chosen_snapshots(const std::string& choice, std::size_t count, const std::string& file) {
+  if (count == 0) throw InputError("analyze: " + file + " has no snapshots");
+  if (choice == "all") {
+    std::vector<std::size_t> all(count);
+    for (std::size_t k = 0; k < count; ++k) all[k] = k;
+    return all;
+  }
+  if (choice == "last") return {count - 1};
+  std::size_t used = 0;
+  long k = -1;
+  try {
+    k = std::stol(choice, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != choice.size() || k < 0 || static_cast<std::size_t>(k) >= count)
+    throw InputError("analyze: --snapshot '" + choice + "': allowed are 0 to " + std::to_string(count - 1) +
+                     ", last or all");
+  return {static_cast<std::size_t>(k)};
+}
+
+std::string axes(const json& p) {
+  std::string s;
+  for (const char* a : {"x", "y", "z"})
+    if (p[a].get<bool>()) s += a;
+  return s.empty() ? "-" : s;
+}
+
+}  // namespace
+
+void add_analyze_command(CLI::App& app) {
+  struct Options {
+    std::string run, snapshot = "last";
+    bool json_output = false, no_distributions = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("analyze", "Contact network, clusters, fabric and distributions of a run's snapshots");
+  cmd->add_option("run", opt->run, "run directory (or its run.h5)")->required();
+  cmd->add_option("--snapshot,-s", opt->snapshot, "snapshot index (from 0), last (default) or all");
+  cmd->add_flag("--json", opt->json_output, "print an array of one object per snapshot (docs/output.md)");
+  cmd->add_flag("--no-distributions", opt->no_distributions,
+                "leave out the force, gap and pair distributions (scalars, tensors and clusters only)");
+  cmd->callback([opt] {
+    fs::path file(opt->run);
+    if (fs::is_directory(file)) file /= "run.h5";
+    if (!fs::is_regular_file(file))
+      throw InputError("analyze: '" + file.string() + "' not found; give a run directory (suspend run --out DIR)");
+    io::h5::File h5 = io::h5::File::open(file.string(), false);
+    const std::vector<std::size_t> which = chosen_snapshots(opt->snapshot, io::snapshot_count(h5.id()), file.string());
+    analysis::ReportOptions options;
+    options.distributions = !opt->no_distributions;
+    json all = json::array();
+    if (!opt->json_output)
+      std::printf("%8s %9s %7s %8s %8s %8s %8s %7s %10s %12s\n", "snapshot", "strain", "Z", "rattlers", "sliding",
+                  "clusters", "largest", "spans", "fabric_xy", "Sigma^c_xy");
+    for (std::size_t k : which) {
+      json r;
+      r["snapshot"] = k;
+      r.update(analysis::report(io::read_configuration(h5.id(), k), options));
+      if (opt->json_output) {
+        all.push_back(std::move(r));
+        continue;
+      }
+      const auto number = [](const json& v, const char* format) {
+        char buf[32] = "-";
+        if (v.is_number()) std::snprintf(buf, sizeof buf, format, v.get<double>());
+        return std::string(buf);
+      };
+      std::printf("%8zu %9.4g %7.3f %8.3f %8s %8zu %8zu %7s %10.4f %12s\n", k, r["strain"].get<double>(),
+                  r["contacts_per_particle"].get<double>(), r["rattler_fraction"].get<double>(),
+                  number(r["sliding_fraction"], "%.3f").c_str(), r["clusters"]["count"].get<std::size_t>(),
+                  r["clusters"]["largest"].get<std::size_t>(), axes(r["clusters"]["percolates"]).c_str(),
+                  r["fabric"]["xy"].get<double>(), number(r["contact_stress"]["xy"], "%.5g").c_str());
+    }
+    if (opt->json_output) std::printf("%s\n", all.dump(1).c_str());
+  });
+}
+
+}  // namespace suspend::app
