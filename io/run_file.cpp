@@ -156,6 +156,18 @@ void RunFile::write_snapshot(const Snapshot& s) {
     h5::write(file_.id(), g + "/contact_tangential_force", s.contact_tangential_force, {m, 3});
     h5::write(file_.id(), g + "/contact_sliding", s.contact_sliding, {m});
   }
+  // The network as line segments for ParaView (run.xdmf): r_i and r_i + d, d the minimum image, so that a contact
+  // through a periodic or sheared face is drawn at its length instead of across the box.
+  std::vector<double> segments(6 * m);
+  std::vector<std::int64_t> nodes(2 * m);
+  for (std::size_t k = 0; k < m; ++k) {
+    const Vec3& ri = p.position[static_cast<std::size_t>(s.contact_pairs[2 * k])];
+    const Vec3 rj = ri + s.box.minimum_image(ri, p.position[static_cast<std::size_t>(s.contact_pairs[2 * k + 1])]).d;
+    for (int a = 0; a < 3; ++a) segments[6 * k + a] = ri[a], segments[6 * k + 3 + a] = rj[a];
+    nodes[2 * k] = static_cast<std::int64_t>(2 * k), nodes[2 * k + 1] = static_cast<std::int64_t>(2 * k + 1);
+  }
+  h5::write(file_.id(), g + "/contact_segments", segments, {2 * m, 3});
+  h5::write(file_.id(), g + "/contact_segment_nodes", nodes, {m, 2});
   h5::set_attribute(file_.id(), g, "step", s.step);
   h5::set_attribute(file_.id(), g, "time", s.time);
   h5::set_attribute(file_.id(), g, "strain", s.strain);
@@ -169,9 +181,14 @@ std::vector<SnapshotInfo> RunFile::snapshots() const {
   std::vector<SnapshotInfo> out;
   for (std::size_t k = 0; k < snapshots_; ++k) {
     const std::string g = snapshot_group(k);
-    out.push_back({g, h5::double_attribute(file_.id(), g, "time"), h5::double_attribute(file_.id(), g, "strain"),
-                   static_cast<std::size_t>(h5::shape_of(file_.id(), g + "/radius")[0]),
-                   static_cast<std::size_t>(h5::shape_of(file_.id(), g + "/contact_pairs")[0])});
+    SnapshotInfo info{g, h5::double_attribute(file_.id(), g, "time"), h5::double_attribute(file_.id(), g, "strain"),
+                      static_cast<std::size_t>(h5::shape_of(file_.id(), g + "/radius")[0]),
+                      static_cast<std::size_t>(h5::shape_of(file_.id(), g + "/contact_pairs")[0])};
+    const std::vector<double> box = h5::read_doubles(file_.id(), g + "/box");
+    info.box = Vec3(box.at(0), box.at(1), box.at(2));
+    info.shear_offset = h5::double_attribute(file_.id(), g, "shear_offset");
+    info.segments = h5::exists(file_.id(), g + "/contact_segments") && h5::exists(file_.id(), g + "/contact_gap");
+    out.push_back(info);
   }
   return out;
 }

@@ -3,7 +3,8 @@
 //   /series/{step,time,strain,shear_rate,dt,contacts,max_overlap,eta_r,N1,N2,Pi}      one row per record
 //   /series/stress/{total,hydrodynamic,lubrication,...}   (rows, 6): xx yy zz xy xz yz, units eta_0 gammadot_ref
 //   /snapshots/NNNNNN/{position,radius,species,velocity,angular_velocity,
-//                      contact_pairs,contact_force,contact_gap,contact_normal_force,contact_tangential_force,contact_sliding}
+//                      contact_pairs,contact_force,contact_gap,contact_normal_force,contact_tangential_force,contact_sliding,
+//                      contact_segments,contact_segment_nodes}
 //                          plus box (3 lengths); attributes: step, time, strain, shear_offset
 // The file grows during the run and is flushed at every checkpoint; a restart truncates it back to the rows and
 // snapshots the checkpoint knew about, so a killed-and-restarted run ends with the same file as an unbroken one.
@@ -51,6 +52,9 @@ struct SnapshotInfo {
   std::string group;
   double time, strain;
   std::size_t particles, contacts;
+  Vec3 box = Vec3::Ones();
+  double shear_offset = 0.0;
+  bool segments = false;  // contact_segments written (files before them draw no contact network)
 };
 
 struct RunAttributes {

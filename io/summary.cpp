@@ -5,8 +5,10 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "analysis/contact_network.hpp"
 #include "core/stress.hpp"
 #include "io/run_file.hpp"
+#include "io/snapshot_reader.hpp"
 #include "io/statistics.hpp"
 
 namespace suspend::io {
@@ -39,6 +41,34 @@ nlohmann::json observables(hid_t f, const std::string& series, const std::vector
   };
   return {{"eta_r", scaled(eta)}, {"N1", scaled(n1)}, {"N2", scaled(n2)}, {"Pi", scaled(pi)}};
 }
+// Window averages over the snapshots (analysis/; docs/output.md "Microstructure"): the contact network is not in the
+// series, so these are means over the snapshots with strain >= from.
+nlohmann::json microstructure(hid_t f, double from) {
+  std::vector<double> sliding, rattlers, largest, spanning;
+  bool details = true;
+  const std::size_t count = snapshot_count(f);
+  for (std::size_t k = 0; k < count; ++k) {
+    if (h5::double_attribute(f, snapshot_group(k), "strain") < from) continue;
+    const analysis::Configuration c = read_configuration(f, k);
+    if (c.size() == 0) continue;
+    const analysis::ContactNumbers z = analysis::contact_numbers(c);
+    const analysis::ClusterStatistics cl = analysis::clusters(c);
+    details = details && c.contact_details;
+    sliding.push_back(z.sliding_fraction);
+    rattlers.push_back(z.rattler_fraction);
+    largest.push_back(static_cast<double>(cl.largest) / static_cast<double>(c.size()));
+    spanning.push_back(cl.percolates[0] || cl.percolates[1] || cl.percolates[2] ? 1.0 : 0.0);
+  }
+  nlohmann::json j;
+  j["snapshots"] = sliding.size();
+  if (sliding.empty()) return j;
+  j["sliding_fraction"] = details ? entry(block_average(sliding)) : nlohmann::json();
+  j["rattler_fraction"] = entry(block_average(rattlers));
+  j["largest_cluster_fraction"] = entry(block_average(largest));
+  j["spanning_fraction"] = block_average(spanning).mean;
+  return j;
+}
+
 }  // namespace
 
 nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
@@ -73,6 +103,7 @@ nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
   // Z, the mean number of contacts of a particle: every contact (pair) touches two particles.
   j["contacts_per_particle"] = entry({2.0 * z.mean / n, 2.0 * z.sem / n});
   j["max_overlap"] = entry(block_average(wo));
+  j["microstructure"] = microstructure(f, ctx.average_from);
   if (ctx.adhesion_force > 0.0) {
     // Paper 004: sigma* = 6 pi Sigma_xy a_1^2 / F_adh, G_adh = F_adh / (6 pi eta_0 a_1^2 gammadot).
     const std::vector<double> sxy = read_series(f, "stress/total", 3);

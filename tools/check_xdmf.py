@@ -30,10 +30,18 @@ def main(path):
             if f[dataset].shape != dims:
                 return f"{path}: {dataset} has shape {f[dataset].shape}, the XDMF says {dims}"
         count += 1
-    grids = [g for g in root.iter("Grid") if g.get("GridType") == "Uniform"]
-    if not grids:
+    for item in root.iter("DataItem"):  # inline values: as many as the dimensions say
+        if item.get("Format") == "XML":
+            want = 1
+            for d in item.get("Dimensions").split():
+                want *= int(d)
+            if len(item.text.split()) != want:
+                return f"{path}: an inline DataItem holds {len(item.text.split())} values, its Dimensions say {want}"
+    collections = [g for g in root.iter("Grid") if g.get("CollectionType") == "Temporal"]
+    if not collections or not any(len(c.findall("Grid")) for c in collections):
         return f"{path}: no snapshot grids"
-    print(f"{path}: valid XDMF, {len(grids)} time steps, {count} datasets checked")
+    steps = ", ".join(f"{c.get('Name')} {len(c.findall('Grid'))}" for c in collections)
+    print(f"{path}: valid XDMF, time steps: {steps}; {count} datasets checked")
     return None
 
 

@@ -3,6 +3,8 @@
 // must be the series' contact stress of the same step, and the contact number the series' count.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include <nlohmann/json.hpp>
 
 #include "io/hdf5.hpp"
@@ -65,6 +67,42 @@ TEST(Analyze, SnapshotContactStressIsTheSeriesContactStress) {
   EXPECT_GE(compared, 3);
   // The adhesive network of the sheared state: a cluster spans the box.
   EXPECT_TRUE(snapshots.back()["clusters"]["percolates"]["x"].get<bool>());
+}
+
+TEST(Analyze, SummaryAveragesTheSnapshotsOfTheWindow) {
+  const std::string dir = analysed_run();
+  const Result r = run({"analyze", dir, "--snapshot", "all", "--json", "--no-distributions"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  double sliding = 0.0, rattlers = 0.0;
+  int n = 0;
+  for (const json& s : json::parse(r.out)) {
+    EXPECT_FALSE(s.contains("pair_distribution"));
+    if (s["strain"].get<double>() < 0.2) continue;  // run.average_from
+    sliding += s["sliding_fraction"].get<double>(), rattlers += s["rattler_fraction"].get<double>(), ++n;
+  }
+  ASSERT_GE(n, 2);
+  const json summary = json::parse(read_text(dir + "/summary.json"));
+  const json& m = summary["microstructure"];
+  EXPECT_EQ(m["snapshots"].get<int>(), n);
+  EXPECT_NEAR(m["sliding_fraction"]["mean"].get<double>(), sliding / n, 1e-12);
+  EXPECT_NEAR(m["rattler_fraction"]["mean"].get<double>(), rattlers / n, 1e-12);
+  EXPECT_GT(m["sliding_fraction"]["mean"].get<double>(), 0.0);  // mu_s = 0.5 under shear: some contacts slide
+}
+
+TEST(Analyze, XdmfShowsParticlesContactsAndTheShearedCell) {
+  // What a ParaView user opens: every dataset the XDMF names exists with its shape (tools/check_xdmf.py), and a
+  // picture drawn through the XDMF's references shows the spheres, the contact network and the cell.
+  const std::string dir = analysed_run();
+  const std::string log = scratch() + "/xdmf.txt", png = scratch() + "/snapshot.png";
+  fs::remove(png);
+  ASSERT_EQ(std::system(("/usr/bin/python3 " SUSPEND_SOURCE_DIR "/tools/check_xdmf.py " + dir + "/run.xdmf > " + log +
+                         " 2>&1").c_str()), 0) << read_text(log);
+  EXPECT_NE(read_text(log).find("particles 4, contacts 4, box 4"), std::string::npos) << read_text(log);
+  ASSERT_EQ(std::system(("/usr/bin/python3 " SUSPEND_SOURCE_DIR "/tools/render_snapshot.py " + dir + " --out " + png +
+                         " > " + log + " 2>&1").c_str()), 0) << read_text(log);
+  EXPECT_NE(read_text(log).find("contacts"), std::string::npos) << read_text(log);
+  ASSERT_TRUE(fs::exists(png));
+  EXPECT_GT(fs::file_size(png), 20000u);
 }
 
 TEST(Analyze, PrintsALinePerSnapshotAndRefusesBadChoices) {

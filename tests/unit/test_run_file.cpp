@@ -159,25 +159,57 @@ TEST(Checkpoint, RefusesOtherCaseCorruptFileAndNaN) {
 
 TEST(Xdmf, EveryReferencedDatasetExists) {
   const std::string path = temp("xdmf.h5");
-  const Particles p = some_particles(4);
+  Particles p = some_particles(4);
+  p.position[0] = Vec3(0.5, 0.5, 1.0);  // touches particle 1 through the sheared y face
+  p.position[1] = Vec3(3.5, 9.5, 1.0);
   std::vector<SnapshotInfo> info;
   {
     RunFile f = RunFile::create(path, {"", 1});
     Snapshot s;
+    s.box = Box(10.0, 10.0, 10.0);
+    s.box.set_shear_offset(3.0);
     s.particles = &p;
     f.write_snapshot(s);
-    s.time = 0.5;
+    s.time = 0.25;
+    s.strain = 0.5;
+    s.contact_pairs = {0, 1};
+    s.contact_force = {0.0, 1.0, 0.0};
+    s.contact_gap = {-0.01};
+    s.contact_normal_force = {1.0};
+    s.contact_tangential_force = {0.0, 0.0, 0.0};
+    s.contact_sliding = {0};
     f.write_snapshot(s);
     info = f.snapshots();
   }
+  ASSERT_EQ(info.size(), 2u);
+  EXPECT_TRUE(info[1].segments);
+  EXPECT_DOUBLE_EQ(info[1].shear_offset, 3.0);
   const std::string x = xdmf_text("xdmf.h5", info);
   h5::File f = h5::File::open(path, false);
-  const std::regex ref(R"(>xdmf\.h5:(/[^<]+)<)");
+  const std::regex ref(R"re(Dimensions="([0-9 ]+)"[^>]*Format="HDF">xdmf\.h5:(/[^<]+)<)re");
   int count = 0;
-  for (auto it = std::sregex_iterator(x.begin(), x.end(), ref); it != std::sregex_iterator(); ++it, ++count)
-    EXPECT_TRUE(h5::exists(f.id(), (*it)[1].str())) << (*it)[1].str();
-  EXPECT_EQ(count, 2 * 4);  // position, radius, velocity, angular_velocity per snapshot
-  EXPECT_NE(x.find("<Time Value=\"0.5\"/>"), std::string::npos);
+  for (auto it = std::sregex_iterator(x.begin(), x.end(), ref); it != std::sregex_iterator(); ++it, ++count) {
+    const std::string name = (*it)[2].str();
+    ASSERT_TRUE(h5::exists(f.id(), name)) << name;
+    std::string dims;
+    for (hsize_t d : h5::shape_of(f.id(), name)) {
+      if (!dims.empty()) dims += ' ';
+      dims += std::to_string(d);
+    }
+    EXPECT_EQ(dims, (*it)[1].str()) << name;
+  }
+  // particles: position, radius, species, velocity, angular_velocity per snapshot; contacts (second snapshot only):
+  // nodes, segments, force, normal force, tangential force, gap, sliding.
+  EXPECT_EQ(count, 2 * 5 + 7);
+  EXPECT_NE(x.find("<Time Value=\"0.5\"/>"), std::string::npos);  // the strain
+  EXPECT_NE(x.find("<Information Name=\"time\" Value=\"0.25\"/>"), std::string::npos);
+  // The contact is drawn at its length: from particle 0 to the image of 1 below the bottom face, (3.5 - 3, -0.5).
+  const std::vector<double> seg = h5::read_doubles(f.id(), "snapshots/000001/contact_segments");
+  ASSERT_EQ(seg.size(), 6u);
+  EXPECT_NEAR(seg[3], 0.5, 1e-12);
+  EXPECT_NEAR(seg[4], -0.5, 1e-12);
+  // The cell's top face is shifted by the offset.
+  EXPECT_NE(x.find("3 1e+01 0 13 1e+01 0 13 1e+01 1e+01 3 1e+01 1e+01"), std::string::npos) << x;
 }
 
 TEST(Checkpoint, FlippedBitsAreRefusedNeverSilentlyRead) {
