@@ -17,4 +17,6 @@ void add_sweep_command(CLI::App& app);
 void add_phim_command(CLI::App& app);
 // `suspend analyze`: contact network, clusters, fabric and distributions of a run's snapshots (apps/cmd_analyze.cpp).
 void add_analyze_command(CLI::App& app);
+// `suspend export`: snapshots as extended XYZ or GSD, through python/suspend/export.py (apps/cmd_export.cpp).
+void add_export_command(CLI::App& app);
 }  // namespace suspend::app

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   suspend::app::add_sweep_command(app);
   suspend::app::add_phim_command(app);
   suspend::app::add_analyze_command(app);
+  suspend::app::add_export_command(app);
   suspend::app::add_check_command(app);
   suspend::app::add_pair_command(app);
   suspend::app::add_mobility_command(app);

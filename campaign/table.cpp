@@ -65,8 +65,12 @@ json gather_table(const Campaign& c, const fs::path& dir) {
     e["summary"] = nullptr;
     if (r.status == "done" || r.status == "jammed") {
       std::ifstream in(pd / "summary.json");
-      const json s = json::parse(in, nullptr, false);
+      json s = json::parse(in, nullptr, false);
       if (!s.is_discarded()) {
+        // The point's own wall_seconds (every invocation) replaces the last invocation's, so that a table does not
+        // depend on how the points were interrupted; the resolved case is kept once per point, in the run's folder.
+        s.erase("wall_seconds");
+        s.erase("case");
         e["summary"] = s;
         e["derived"] = io::derived_rheology(s);
       }

@@ -249,7 +249,7 @@ std::int64_t int_attribute(hid_t loc, const std::string& path, const std::string
   return v;
 }
 
-Table Table::create(hid_t loc, const std::string& name, hsize_t width, hsize_t chunk_rows) {
+Table Table::create(hid_t loc, const std::string& name, hsize_t width, hsize_t chunk_rows, bool integer) {
   Table t;
   t.width_ = width;
   t.vector_ = (width == 1);
@@ -260,7 +260,8 @@ Table Table::create(hid_t loc, const std::string& name, hsize_t width, hsize_t c
   H5Pset_chunk(dcpl.id(), rank, chunk);
   Handle lcpl(check(H5Pcreate(H5P_LINK_CREATE), "plist"), H5Pclose);
   H5Pset_create_intermediate_group(lcpl.id(), 1);
-  t.set_ = Handle(check(H5Dcreate2(loc, name.c_str(), H5T_NATIVE_DOUBLE, space.id(), lcpl.id(), dcpl.id(),
+  t.set_ = Handle(check(H5Dcreate2(loc, name.c_str(), integer ? H5T_STD_I64LE : H5T_NATIVE_DOUBLE, space.id(),
+                                   lcpl.id(), dcpl.id(),
                                    H5P_DEFAULT),
                         "create table " + name),
                   H5Dclose);

@@ -71,7 +71,9 @@ bool has_attribute(hid_t loc, const std::string& path, const std::string& name);
 // A growable table of doubles: rows of `width` values, appended one at a time.
 class Table {
  public:
-  static Table create(hid_t loc, const std::string& name, hsize_t width, hsize_t chunk_rows = 256);
+  // integer: stored as 64-bit integers (counts); rows are still passed and read as doubles, which HDF5 converts.
+  static Table create(hid_t loc, const std::string& name, hsize_t width, hsize_t chunk_rows = 256,
+                      bool integer = false);
   static Table open(hid_t loc, const std::string& name);
   void append(const double* row);
   void append_rows(const double* rows, hsize_t count);  // count rows of width() values, row-major

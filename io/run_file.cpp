@@ -10,9 +10,24 @@
 namespace suspend::io {
 
 namespace {
-const std::array<const char*, 13> scalar_columns = {
-    "step", "time", "strain", "shear_rate", "dt", "contacts", "max_overlap", "eta_r", "N1", "N2", "Pi",
-    "solver_iterations", "solver_residual"};
+struct Column {
+  const char* name;
+  const char* units;  // lengths in a_1, times in 1/gammadot_ref, stresses in eta_0 gammadot_ref (docs/units.md)
+  bool integer;
+};
+const std::array<Column, 13> scalar_columns = {{{"step", "1", true},
+                                                {"time", "1/gammadot_ref", false},
+                                                {"strain", "1", false},
+                                                {"shear_rate", "gammadot_ref", false},
+                                                {"dt", "1/gammadot_ref", false},
+                                                {"contacts", "1", true},
+                                                {"max_overlap", "a_1", false},
+                                                {"eta_r", "eta_0", false},
+                                                {"N1", "eta_0 gammadot_ref", false},
+                                                {"N2", "eta_0 gammadot_ref", false},
+                                                {"Pi", "eta_0 gammadot_ref", false},
+                                                {"solver_iterations", "1", true},
+                                                {"solver_residual", "1", false}}};
 std::array<double, 6> components_of(const Mat3& m) {
   return {m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(0, 2), m(1, 2)};
 }
@@ -26,13 +41,18 @@ std::string snapshot_group(std::size_t index) {
 
 void RunFile::open_tables(bool create) {
   tables_.clear();
-  auto table = [&](const std::string& name, hsize_t width) {
-    tables_.emplace(name, create ? h5::Table::create(file_.id(), "series/" + name, width)
-                                 : h5::Table::open(file_.id(), "series/" + name));
+  auto table = [&](const std::string& name, hsize_t width, const char* units, bool integer) {
+    const std::string path = "series/" + name;
+    if (!create) {
+      tables_.emplace(name, h5::Table::open(file_.id(), path));
+      return;
+    }
+    tables_.emplace(name, h5::Table::create(file_.id(), path, width, 256, integer));
+    h5::set_attribute(file_.id(), path, "units", std::string(units));
   };
-  for (const char* c : scalar_columns) table(c, 1);
-  table("stress/total", 6);
-  for (auto name : contribution_names) table("stress/" + std::string(name), 6);
+  for (const Column& c : scalar_columns) table(c.name, 1, c.units, c.integer);
+  table("stress/total", 6, "eta_0 gammadot_ref", false);
+  for (auto name : contribution_names) table("stress/" + std::string(name), 6, "eta_0 gammadot_ref", false);
 }
 
 RunFile RunFile::create(const std::string& path, const RunAttributes& attributes) {

@@ -14,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "core/rng.hpp"
+#include "core/version.hpp"
 #include "dem/integrate/time_step_control.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
@@ -25,6 +26,7 @@
 #include "io/schema_reader.hpp"
 #include "io/summary.hpp"
 #include "io/xdmf.hpp"
+#include "io/yaml_json.hpp"
 
 namespace suspend::io {
 
@@ -116,6 +118,7 @@ std::string physics_fingerprint(const Case& c) {
 }
 
 int run_case(const Case& c, const RunOptions& o) {
+  const auto started = std::chrono::steady_clock::now();
   const int threads = o.threads > 0 ? o.threads : (c.run.threads > 0 ? static_cast<int>(c.run.threads)
                                                                       : omp_get_num_procs());
   omp_set_num_threads(threads);
@@ -220,6 +223,12 @@ int run_case(const Case& c, const RunOptions& o) {
                                 average_from, c.simulation.control == FlowControl::stress,
                                 adhesion_force(c.simulation.contact)});
       summary.update(extra);
+      // What produced it: the resolved case, the program and this invocation's wall time and threads.
+      summary["case"] = yaml_to_json(to_yaml(c));
+      summary["version"] = std::string(suspend::version);
+      summary["git_commit"] = std::string(suspend::git_commit);
+      summary["threads"] = threads;
+      summary["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
       if constexpr (requires { sim.total_stokes_solves(); }) {
         const auto steps = sim.evaluated_steps(), solves = sim.total_stokes_solves();
         summary["fcm"] = {{"steps", steps}, {"stokes_solves", solves},

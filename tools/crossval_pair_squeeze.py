@@ -75,26 +75,25 @@ def repulsion_of(case_text):
 
 def measured_squeeze(run_h5):
     """(xi, 2 F / (6 pi u)) from the snapshots of one run, sorted by xi."""
-    import h5py
     os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+    import suspend  # python/suspend: the reader of run.h5
+    run = suspend.load_run(run_h5)
+    force, debye = repulsion_of(run.attributes["case"])
     points = []
-    with h5py.File(run_h5, "r") as f:
-        case = f.attrs["case"]
-        force, debye = repulsion_of(case.decode() if isinstance(case, bytes) else str(case))
-        for name in sorted(f["snapshots"]):
-            g = f["snapshots"][name]
-            x, v, a = g["position"][()], g["velocity"][()], g["radius"][()]
-            if len(a) != 2 or abs(a[0] - 1.0) > 1e-12 or abs(a[1] - 1.0) > 1e-12:
-                raise ValueError(f"{run_h5}: expected two spheres of radius 1")
-            d = [x[1][k] - x[0][k] for k in range(3)]
-            r = math.sqrt(sum(c * c for c in d))
-            n = [c / r for c in d]
-            u = sum((v[1][k] - v[0][k]) * n[k] for k in range(3))
-            h = r - 2.0
-            if h <= 0.0 or u <= 0.0:
-                continue
-            f_rep = force * 1.0 * math.exp(-h / debye)  # a-bar = 1 for equal spheres of radius 1
-            points.append((h, 2.0 * f_rep / (6.0 * math.pi * u)))
+    for snap in run.snapshots():
+        x, v, a = snap["position"], snap["velocity"], snap["radius"]
+        if len(a) != 2 or abs(a[0] - 1.0) > 1e-12 or abs(a[1] - 1.0) > 1e-12:
+            raise ValueError(f"{run_h5}: expected two spheres of radius 1")
+        d = [x[1][k] - x[0][k] for k in range(3)]
+        r = math.sqrt(sum(c * c for c in d))
+        n = [c / r for c in d]
+        u = sum((v[1][k] - v[0][k]) * n[k] for k in range(3))
+        h = r - 2.0
+        if h <= 0.0 or u <= 0.0:
+            continue
+        f_rep = force * 1.0 * math.exp(-h / debye)  # a-bar = 1 for equal spheres of radius 1
+        points.append((h, 2.0 * f_rep / (6.0 * math.pi * u)))
     points.sort()
     return points
 
@@ -126,7 +125,7 @@ def main(argv):
         if not os.path.isfile(os.path.join(dirs[0], m, "run.h5")):
             print(f"error: {os.path.join(dirs[0], m, 'run.h5')} not found (run suspend crossval first)", file=sys.stderr)
             return 2
-    require("h5py")
+    require("h5py", "numpy")
     exact = exact_squeeze(table)
     runs = {m: measured_squeeze(os.path.join(dirs[0], m, "run.h5")) for m in ("pairwise", "fcm")}
     ok = True
