@@ -16,6 +16,8 @@ cat <<NEXT
 Each point is a run directory ($out/points/NAME: run.h5, run.xdmf for ParaView, summary.json);
 the table of all of them is $out/campaign.csv. To go further (from $root):
   build/bin/suspend run cases/quickstart.yaml --out runs/q --set flow.sigma_star=5     # one point, with progress
+  build/bin/suspend analyze runs/q --snapshot all     # contact network, clusters, fabric of each snapshot
+  tools/render_snapshot.py runs/q                     # a picture of the last snapshot (or open runs/q/run.xdmf)
   build/bin/suspend sweep cases/phim/pairwise_campaign.yaml --out runs/phim_pairwise  # the full campaign (days)
   build/bin/suspend phim results/phim/pairwise                                        # its committed fits
   docs/campaigns.md (sweeps and fits), results/README.md (phi_m(sigma*) against paper 004)
