@@ -2,13 +2,6 @@
 
 namespace suspend::analysis {
 
-namespace {
-Mat3 sym_outer(const Vec3& a, const Vec3& b) {
-  const Mat3 m = a * b.transpose();
-  return 0.5 * (m + m.transpose());
-}
-}  // namespace
-
 ContactTensors contact_tensors(const Configuration& c) {
   ContactTensors out;
   for (const Contact& k : c.contacts) {

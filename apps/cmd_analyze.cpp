@@ -2,19 +2,18 @@
 // snapshots (analysis/report.hpp; docs/output.md, "Microstructure"): a line per snapshot, or with --json an array
 // of one object per snapshot.
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "analysis/report.hpp"
 #include "apps/commands.hpp"
+#include "apps/run_argument.hpp"
 #include "core/error.hpp"
 #include "io/hdf5.hpp"
 #include "io/snapshot_reader.hpp"
 
 namespace suspend::app {
 
-namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
 namespace {
@@ -62,12 +61,9 @@ void add_analyze_command(CLI::App& app) {
   cmd->add_flag("--no-distributions", opt->no_distributions,
                 "leave out the force, gap and pair distributions (scalars, tensors and clusters only)");
   cmd->callback([opt] {
-    fs::path file(opt->run);
-    if (fs::is_directory(file)) file /= "run.h5";
-    if (!fs::is_regular_file(file))
-      throw InputError("analyze: '" + file.string() + "' not found; give a run directory (suspend run --out DIR)");
-    io::h5::File h5 = io::h5::File::open(file.string(), false);
-    const std::vector<std::size_t> which = chosen_snapshots(opt->snapshot, io::snapshot_count(h5.id()), file.string());
+    const std::string file = run_file_argument(opt->run, "analyze");
+    io::h5::File h5 = io::h5::File::open(file, false);
+    const std::vector<std::size_t> which = chosen_snapshots(opt->snapshot, io::snapshot_count(h5.id()), file);
     analysis::ReportOptions options;
     options.distributions = !opt->no_distributions;
     json all = json::array();

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "apps/run_argument.hpp"
 #include "core/error.hpp"
 
 namespace suspend::app {
@@ -27,14 +28,11 @@ void add_export_command(CLI::App& app) {
   cmd->add_option("--format", opt->format, "extxyz or gsd")->required()->check(CLI::IsMember({"extxyz", "gsd"}));
   cmd->add_option("--out,-o", opt->out, "file to write (default: RUN_DIR/run.xyz or run.gsd)");
   cmd->callback([opt] {
-    fs::path file(opt->run);
-    if (fs::is_directory(file)) file /= "run.h5";
-    if (!fs::is_regular_file(file))
-      throw InputError("export: '" + file.string() + "' not found; give a run directory (suspend run --out DIR)");
+    const std::string file = run_file_argument(opt->run, "export");
     const std::string python = "/usr/bin/python3", script = SUSPEND_PYTHON_DIR "/suspend/export.py";
     if (access(python.c_str(), X_OK) != 0 || !fs::is_regular_file(script))
       throw InputError("export: needs Debian's python3 (" + python + ") and " + script);
-    std::vector<std::string> args = {python, script, file.string(), "--format", opt->format};
+    std::vector<std::string> args = {python, script, file, "--format", opt->format};
     if (!opt->out.empty()) args.insert(args.end(), {"--out", opt->out});
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
