@@ -18,7 +18,8 @@ constexpr const char* format = "suspend-checkpoint-1";
 
 // FNV-1a over the root attributes (text, then the bytes of every number, in a fixed order): stored in a dataset,
 // which carries a Fletcher32 checksum like every dataset, so that a flipped bit in an attribute is found too.
-std::int64_t attribute_checksum(const Checkpoint& c) {
+// `accumulated`: the checkpoint holds accumulated_strain (absent before it existed, where it equals the strain).
+std::int64_t attribute_checksum(const Checkpoint& c, bool accumulated = true) {
   std::uint64_t h = 1469598103934665603ull;
   auto bytes = [&](const void* data, std::size_t n) {
     const auto* b = static_cast<const unsigned char*>(data);
@@ -31,6 +32,34 @@ std::int64_t attribute_checksum(const Checkpoint& c) {
                           c.clock.next_checkpoint, c.clock.jam_window_time, c.clock.jam_window_strain};
   bytes(ints, sizeof ints);
   bytes(reals, sizeof reals);
+  if (accumulated) bytes(&c.state.accumulated_strain, sizeof c.state.accumulated_strain);
+  return static_cast<std::int64_t>(h);
+}
+
+// FNV-1a of the decoded arrays: Fletcher32 guards each dataset's stored bytes, not the metadata that says how to
+// decode them (a flipped bit in a datatype message reads other numbers from intact bytes).
+std::int64_t content_checksum(const SimulationState& s) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto bytes = [&](const void* data, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t k = 0; k < n; ++k) h = (h ^ b[k]) * 1099511628211ull;
+  };
+  const Particles& p = s.particles;
+  for (const std::vector<Vec3>* v : {&p.position, &p.velocity, &p.angular_velocity})
+    for (const Vec3& x : *v) bytes(x.data(), 3 * sizeof(double));
+  bytes(p.radius.data(), p.radius.size() * sizeof(double));
+  for (int k : p.species) {
+    const std::int64_t w = k;
+    bytes(&w, sizeof w);
+  }
+  bytes(s.warm_start.data(), s.warm_start.size() * sizeof(double));
+  bytes(s.verlet.data(), s.verlet.size() * sizeof(double));
+  for (const ContactHistory::Entry& e : s.contacts) {
+    const std::int64_t ij[2] = {e.i, e.j};
+    bytes(ij, sizeof ij);
+    bytes(e.history.tangential_stretch.data(), 3 * sizeof(double));
+    bytes(e.history.rolling_stretch.data(), 3 * sizeof(double));
+  }
   return static_cast<std::int64_t>(h);
 }
 
@@ -70,6 +99,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
     h5::set_attribute(id, ".", "step", c.state.step);
     h5::set_attribute(id, ".", "time", c.state.time);
     h5::set_attribute(id, ".", "strain", c.state.strain);
+    h5::set_attribute(id, ".", "accumulated_strain", c.state.accumulated_strain);
     h5::set_attribute(id, ".", "last_dt", c.state.last_dt);
     h5::set_attribute(id, ".", "shear_rate", c.state.shear_rate);
     const auto& contacts = c.state.contacts;
@@ -92,6 +122,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
     h5::set_attribute(id, ".", "jam_window_time", c.clock.jam_window_time);
     h5::set_attribute(id, ".", "jam_window_strain", c.clock.jam_window_strain);
     h5::write(id, "checksums/attributes", std::vector<std::int64_t>{attribute_checksum(c)}, {1});
+    h5::write(id, "checksums/content", std::vector<std::int64_t>{content_checksum(c.state)}, {1});
     f.flush();
   });
 }
@@ -113,6 +144,8 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     c.state.step = h5::int_attribute(id, ".", "step");
     c.state.time = h5::double_attribute(id, ".", "time");
     c.state.strain = h5::double_attribute(id, ".", "strain");
+    const bool accumulated = h5::has_attribute(id, ".", "accumulated_strain");
+    c.state.accumulated_strain = accumulated ? h5::double_attribute(id, ".", "accumulated_strain") : c.state.strain;
     c.state.last_dt = h5::double_attribute(id, ".", "last_dt");
     c.state.shear_rate = h5::double_attribute(id, ".", "shear_rate");
     c.clock.next_series = h5::double_attribute(id, ".", "next_series");
@@ -124,11 +157,11 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
       c.clock.jam_window_time = h5::double_attribute(id, ".", "jam_window_time");
       c.clock.jam_window_strain = h5::double_attribute(id, ".", "jam_window_strain");
     }
-    for (double v : {c.state.time, c.state.strain, c.state.last_dt, c.state.shear_rate, c.clock.next_series, c.clock.next_snapshot, c.clock.next_checkpoint,
+    for (double v : {c.state.time, c.state.strain, c.state.accumulated_strain, c.state.last_dt, c.state.shear_rate, c.clock.next_series, c.clock.next_snapshot, c.clock.next_checkpoint,
                      c.clock.jam_window_time, c.clock.jam_window_strain})
       if (!std::isfinite(v)) throw InputError(path + ": time, strain or output clock is not finite");
     if (h5::exists(id, "checksums/attributes") &&  // absent in checkpoints written before it existed
-        h5::read_ints(id, "checksums/attributes") != std::vector<std::int64_t>{attribute_checksum(c)})
+        h5::read_ints(id, "checksums/attributes") != std::vector<std::int64_t>{attribute_checksum(c, accumulated)})
       throw InputError(path + ": corrupt checkpoint (its attributes do not match their checksum)");
     if (c.state.step < 0 || c.clock.series_rows < 0 || c.clock.snapshots < 0 || c.threads < 1)
       throw InputError(path + ": corrupt checkpoint (negative step, row or snapshot count, or no threads)");
@@ -177,6 +210,9 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
         throw InputError(path + ": contact " + std::to_string(k) + " has a non-finite stretch");
       c.state.contacts.push_back(e);
     }
+    if (h5::exists(id, "checksums/content") &&  // absent in checkpoints written before it existed
+        h5::read_ints(id, "checksums/content") != std::vector<std::int64_t>{content_checksum(c.state)})
+      throw InputError(path + ": corrupt checkpoint (its arrays do not match their checksum)");
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {
