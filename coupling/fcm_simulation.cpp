@@ -77,14 +77,18 @@ FcmSimulation::FcmSimulation(SimulationState state, const Box& box, const Simula
     throw InputError("run.time_step.contacts = implicit needs hydrodynamics.fcm.subgrid = true");
   if (params_.integrator != Integrator::overdamped)
     throw InputError("hydrodynamics.model = fcm needs run.integrator = overdamped");
-  if (params_.wave_amplitude != 0.0)
-    throw InputError("hydrodynamics.model = fcm needs flow.type = simple_shear");
-  if (params_.control == FlowControl::rate || state_.shear_rate == 0.0) state_.shear_rate = params_.shear_rate;
+  params_.flow.validate();
+  if (params_.flow.wave_amplitude != 0.0)
+    throw InputError("hydrodynamics.model = fcm needs a simple shear (flow.type = wavy is pairwise only)");
+  if (params_.flow.control == FlowControl::rate || state_.shear_rate == 0.0)
+    state_.shear_rate = params_.flow.control == FlowControl::rate
+                            ? params_.flow.rate(state_.time, state_.accumulated_strain)
+                            : params_.flow.shear_rate;
   rate_ = state_.shear_rate;
   contacts_ = ContactStage(std::max(interaction_range(params_.contact), subgrid_ ? subgrid_->range() : 0.0),
                            params_.skin, p, state_.contacts);
   state_.contacts.clear();
-  mobility_->set_warm_start_state(state_.warm_start, p.size(), params_.control == FlowControl::stress);
+  mobility_->set_warm_start_state(state_.warm_start, p.size(), params_.flow.control == FlowControl::stress);
   state_.warm_start.clear();
 }
 
@@ -119,6 +123,7 @@ void FcmSimulation::evaluate() {
     dt_ = overdamped_time_step(ts, params_.contact, state_.shear_rate,
                                max_nonaffine_speed(p, hydro::WavyShear{state_.shear_rate, 0.0, 0, box_.length().y()}),
                                a_min_, state_.last_dt, sums.mean_compliance());
+  if (ts.implicit_contacts) dt_ = std::min(dt_, params_.flow.max_time_step());
 
   t0 = omp_get_wtime();
   if (subgrid_) {
@@ -156,6 +161,7 @@ void FcmSimulation::evaluate() {
   stress_[Contribution::lubrication] = result_.subgrid_stress / volume;
 
   if (!ts.implicit_contacts) dt_ = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt);
+  dt_ = std::min(dt_, params_.flow.max_time_step());
   evaluated_ = true;
 }
 
@@ -176,9 +182,14 @@ void FcmSimulation::solve_velocities() {
   coupling::CoupledProblem pb{p.position, p.radius, sums.force, sums.torque, rate_, box_.shear_offset()};
   // Full solves at multiples of far_field_every (by step number, so a restart keeps the schedule).
   pb.refresh_far_field = fcm_.far_field_every <= 1 || state_.step % fcm_.far_field_every == 0;
+  // The lagged far field holds for the rate of its full solve: an imposed rate that changed since the last step
+  // (oscillation, reversal) refreshes it. Stress control solves unit-rate and force parts, which do not depend on it.
+  if (params_.flow.control == FlowControl::rate && params_.flow.rate(state_.time, state_.accumulated_strain) !=
+                                                       state_.shear_rate)
+    pb.refresh_far_field = true;
   try {
-    if (params_.control == FlowControl::rate) {
-      pb.shear_rate = rate_ = params_.shear_rate;
+    if (params_.flow.control == FlowControl::rate) {
+      pb.shear_rate = rate_ = params_.flow.rate(state_.time, state_.accumulated_strain);
       mobility_->solve(pb, subgrid_ ? &*subgrid_ : nullptr, result_);
       return;
     }
@@ -189,7 +200,7 @@ void FcmSimulation::solve_velocities() {
   // Sigma_xy V = gammadot (shear part, which includes 2 E_inf V) + force part + the contacts' virial.
   const double sigma_h = hydrodynamic_shear_stress(result_, 1.0);
   const double sigma_c = hydrodynamic_shear_stress(force_result_, 0.0) + sums.virial.total()(0, 1);
-  rate_ = (params_.shear_stress * box_.volume() - sigma_c) / sigma_h;
+  rate_ = (params_.flow.stress(state_.time, state_.accumulated_strain) * box_.volume() - sigma_c) / sigma_h;
   if (!std::isfinite(rate_)) fail("the stress control gave a non-finite shear rate");
   for (std::size_t i = 0; i < n; ++i) {
     result_.velocities[i] = rate_ * result_.velocities[i] + force_result_.velocities[i];
@@ -217,6 +228,7 @@ void FcmSimulation::advance() {
   }
   const double dstrain = rate_ * dt_;
   state_.strain += dstrain;
+  state_.accumulated_strain += std::abs(dstrain);
   state_.time += dt_;
   state_.last_dt = dt_;
   state_.shear_rate = rate_;

@@ -18,17 +18,14 @@ void SimulationParams::validate() const {
   if (lubrication) resistance.validate();
   time_step.validate();
   if (!(max_overlap > 0.0)) throw InputError("run.max_overlap must be > 0");
-  if (!std::isfinite(shear_rate)) throw InputError("flow.shear_rate must be finite");
-  if (control == FlowControl::stress) {
-    if (!std::isfinite(shear_stress)) throw InputError("flow.shear_stress must be finite");
+  flow.validate();
+  if (flow.control == FlowControl::stress) {
     if (integrator != Integrator::overdamped)
       throw InputError("flow.control = stress needs run.integrator = overdamped (the rate follows from the "
                        "instantaneous force balance)");
-    if (wave_amplitude != 0.0)
+    if (flow.wave_amplitude != 0.0)
       throw InputError("flow.control = stress is available for simple shear only (flow.type = simple_shear)");
   }
-  if (wave_amplitude != 0.0 && wave_periods < 1)
-    throw InputError("flow.periods must be >= 1 for a wavy shear (flow.amplitude != 0)");
   if (integrator == Integrator::inertial && !(stokes_number > 0.0 && std::isfinite(stokes_number)))
     throw InputError("run.stokes_number must be > 0 for run.integrator = inertial");
   if (time_step.implicit_contacts && integrator != Integrator::overdamped)
@@ -50,9 +47,12 @@ PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, co
   a_min_ = *std::min_element(p.radius.begin(), p.radius.end());
   for (double a : p.radius) radius_cubed_ += a * a * a;
   state_.contacts.clear();
-  if (params_.control == FlowControl::rate || state_.shear_rate == 0.0) state_.shear_rate = params_.shear_rate;
+  if (params_.flow.control == FlowControl::rate || state_.shear_rate == 0.0)
+    state_.shear_rate = params_.flow.control == FlowControl::rate
+                            ? params_.flow.rate(state_.time, state_.accumulated_strain)
+                            : params_.flow.shear_rate;
   rate_ = state_.shear_rate;
-  if (params_.control == FlowControl::stress) zero_.assign(n, Vec3::Zero());  // the force-free problem's input
+  if (params_.flow.control == FlowControl::stress) zero_.assign(n, Vec3::Zero());  // the force-free problem's input
   // Lubrication is tabulated per pair of distinct radii.
   species_radius_ = p.radius;
   std::sort(species_radius_.begin(), species_radius_.end());
@@ -67,7 +67,7 @@ PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, co
     state_.warm_start.clear();
   } else if (params_.lubrication) {
     solver_.emplace(species_radius_, params_.resistance);
-    if (params_.control == FlowControl::stress) force_solver_.emplace(species_radius_, params_.resistance);
+    if (params_.flow.control == FlowControl::stress) force_solver_.emplace(species_radius_, params_.resistance);
     const std::size_t w = state_.warm_start.size();
     auto restore = [&](ResistanceSolver& s, std::size_t from) {
       s.set_warm_start(Eigen::Map<const Eigen::VectorXd>(state_.warm_start.data() + from,
@@ -137,7 +137,7 @@ double PairwiseSimulation::overdamped_velocities() {
   if (params_.time_step.implicit_contacts) implicit = {&contacts_.stiffness(), dt_};
   const PairSums& sums = contacts_.sums();
   const std::vector<ActivePair>& pairs = contacts_.pairs();
-  if (solver_ && params_.control == FlowControl::rate) {
+  if (solver_ && params_.flow.control == FlowControl::rate) {
     solver_->solve(p, species_, pairs, flow(rate_), sums.force, sums.torque, solve_, where.str(), implicit);
   } else if (solver_) {
     // Rate-driven problem at unit rate and force-driven problem at zero rate; velocities, stress and the implicit
@@ -147,7 +147,7 @@ double PairwiseSimulation::overdamped_velocities() {
                          implicit);
     const double sigma_h = 1.0 + solve_.stress.total()(0, 1) / volume;
     const double sigma_c = (sums.virial.total()(0, 1) + force_solve_.stress.total()(0, 1)) / volume;
-    rate_ = (params_.shear_stress - sigma_c) / sigma_h;
+    rate_ = (params_.flow.stress(state_.time, state_.accumulated_strain) - sigma_c) / sigma_h;
     for (std::size_t i = 0; i < n; ++i) {
       solve_.velocity[i] = rate_ * solve_.velocity[i] + force_solve_.velocity[i];
       solve_.angular_velocity[i] = rate_ * solve_.angular_velocity[i] + force_solve_.angular_velocity[i];
@@ -156,10 +156,11 @@ double PairwiseSimulation::overdamped_velocities() {
       solve_.stress.part[c] = rate_ * solve_.stress.part[c] + force_solve_.stress.part[c];
     for (std::size_t k = 0; k < solve_.contact_change_on_j.size(); ++k)
       solve_.contact_change_on_j[k] = rate_ * solve_.contact_change_on_j[k] + force_solve_.contact_change_on_j[k];
-  } else if (params_.control == FlowControl::stress) {
+  } else if (params_.flow.control == FlowControl::stress) {
     // Drag only: the hydrodynamic stress is 2 E_inf + the Stokes stresslets, the rest is the contacts'.
     const double sigma_h = 1.0 + (10.0 / 3.0) * pi * radius_cubed_ / volume;
-    rate_ = (params_.shear_stress - sums.virial.total()(0, 1) / volume) / sigma_h;
+    rate_ = (params_.flow.stress(state_.time, state_.accumulated_strain) - sums.virial.total()(0, 1) / volume) /
+            sigma_h;
   }
   double max_speed = 0.0;
   const hydro::WavyShear f = flow(rate_);
@@ -258,8 +259,10 @@ void PairwiseSimulation::evaluate() {
     dt_ = overdamped_time_step(params_.time_step, params_.contact, state_.shear_rate,
                                max_nonaffine_speed(p, flow(state_.shear_rate)), a_min_, state_.last_dt,
                                contacts_.sums().mean_compliance());
+    dt_ = std::min(dt_, params_.flow.max_time_step());
   }
-  rate_ = params_.control == FlowControl::rate ? params_.shear_rate : state_.shear_rate;
+  rate_ = params_.flow.control == FlowControl::rate ? params_.flow.rate(state_.time, state_.accumulated_strain)
+                                                    : state_.shear_rate;
   const double max_speed = inertial ? inertial_velocities() : overdamped_velocities();
   if (!std::isfinite(rate_)) fail("the stress control gave a non-finite shear rate");
   for (std::size_t i = 0; i < n; ++i)
@@ -286,6 +289,7 @@ void PairwiseSimulation::evaluate() {
   } else if (!ts.implicit_contacts) {
     dt_ = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt);
   }
+  dt_ = std::min(dt_, params_.flow.max_time_step());
   evaluated_ = true;
 }
 
@@ -316,6 +320,7 @@ void PairwiseSimulation::advance() {
   }
   const double dstrain = rate_ * dt_;
   state_.strain += dstrain;
+  state_.accumulated_strain += std::abs(dstrain);
   state_.time += dt_;
   state_.last_dt = dt_;
   state_.shear_rate = rate_;

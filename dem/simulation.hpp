@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "core/box.hpp"
+#include "core/flow.hpp"
 #include "core/particles.hpp"
 #include "core/stress.hpp"
 #include "dem/contact/contact_law.hpp"
@@ -43,15 +44,10 @@
 
 namespace suspend {
 
-enum class FlowControl { rate, stress };
 enum class Integrator { overdamped, inertial };
 
 struct SimulationParams {
-  double shear_rate = 1.0;                  // gammadot / gammadot_ref: imposed, or the first step's under stress control
-  FlowControl control = FlowControl::rate;  // imposed shear rate or imposed shear stress
-  double shear_stress = 1.0;                // stress control: target Sigma_xy (eta_0 gammadot_ref)
-  double wave_amplitude = 0.0;              // wavy shear (paper 000 eq. 17): U (gammadot_ref a_1)
-  int wave_periods = 0;                     // n, periods across L_y
+  Flow flow;  // control, protocol and shape of the imposed flow (core/flow.hpp)
   Integrator integrator = Integrator::overdamped;
   double stokes_number = 1.0e-3;            // inertial: St = rho a_1^2 gammadot_ref / eta_0 (the density in code units)
   ContactLaw contact = ComposedLaw<SoftRepulsion>{};
@@ -67,7 +63,8 @@ struct SimulationParams {
 struct SimulationState {
   Particles particles;
   double time = 0.0;
-  double strain = 0.0;
+  double strain = 0.0;              // signed: the Lees-Edwards cell's
+  double accumulated_strain = 0.0;  // integral of |gammadot| dt (core/flow.hpp)
   std::int64_t step = 0;
   double last_dt = 0.0;  // time step of the last advance: frictional springs integrate the last velocities over it
   double shear_rate = 0.0;  // shear rate of the last advance (Lees-Edwards image velocity); 0: the imposed one
@@ -114,7 +111,7 @@ class PairwiseSimulation {
 
  private:
   hydro::WavyShear flow(double rate) const {
-    return {rate, params_.wave_amplitude, params_.wave_periods, box_.length().y()};
+    return {rate, params_.flow.wave_amplitude, params_.flow.wave_periods, box_.length().y()};
   }
   [[noreturn]] void fail(const std::string& what) const;
   void contact_forces(double image_velocity);

@@ -84,8 +84,11 @@ void refuse_runs_without_progress(const Case& c) {
   constexpr double max_steps = max_run_steps;
   const SimulationParams& s = c.simulation;
   const TimeStepParams& ts = s.time_step;
-  const bool stress = s.control == FlowControl::stress;
-  const double rate = stress ? std::abs(s.shear_stress) : std::abs(s.shear_rate);
+  const Flow& fl = s.flow;
+  const bool stress = fl.control == FlowControl::stress;
+  // The largest rate the protocol imposes (an oscillation's amplitude).
+  const double rate = stress ? std::abs(fl.oscillatory() ? fl.stress_amplitude : fl.shear_stress)
+                             : std::abs(fl.oscillatory() ? fl.strain_amplitude * fl.angular_frequency : fl.shear_rate);
   const std::string rate_key = stress ? "flow.shear_stress (or sigma_star)" : "flow.shear_rate";
   double step = 0.0;  // largest strain per step
   std::string why;
@@ -147,25 +150,52 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   {
     SchemaReader f = top.child("flow");
     SimulationParams& s = c.simulation;
-    c.flow = f.choice("type", "simple_shear", {"simple_shear", "wavy"});
-    s.control = f.choice("control", "rate", {"rate", "stress"}) == "stress" ? FlowControl::stress : FlowControl::rate;
-    s.shear_rate = f.number("shear_rate", 1.0, Range::positive());
-    if (s.control == FlowControl::stress) {
-      if (f.has("sigma_star") && f.has("shear_stress"))
-        f.fail("sigma_star", "give either shear_stress or sigma_star (adhesive laws), not both");
-      if (f.has("sigma_star"))
-        sigma_star = f.number("sigma_star", Range::positive());
-      else
-        s.shear_stress = f.number("shear_stress", Range::positive());
+    c.flow = f.choice("type", "simple_shear", {"simple_shear", "wavy", "oscillatory", "reversal"});
+    Flow& fl = s.flow;
+    fl.protocol = c.flow == "oscillatory" ? FlowProtocol::oscillatory
+                  : c.flow == "reversal"  ? FlowProtocol::reversal
+                                          : FlowProtocol::steady;
+    fl.control = f.choice("control", "rate", {"rate", "stress"}) == "stress" ? FlowControl::stress : FlowControl::rate;
+    const bool oscillatory = fl.oscillatory();
+    if (oscillatory && fl.control == FlowControl::rate && f.has("shear_rate"))
+      f.fail("shear_rate", "an oscillation's rate is strain_amplitude x angular_frequency x cos(omega t); give those "
+                           "and remove shear_rate (--set flow.shear_rate=null)");
+    fl.shear_rate = f.number("shear_rate", 1.0, Range::positive());
+    if (oscillatory) {
+      fl.angular_frequency = f.number("angular_frequency", Range::positive());
+      fl.steps_per_cycle = static_cast<int>(f.integer("steps_per_cycle", fl.steps_per_cycle, 8, 1'000'000'000));
+    }
+    if (fl.control == FlowControl::stress) {
+      if (oscillatory) {
+        for (const char* key : {"shear_stress", "sigma_star", "strain_amplitude"})
+          if (f.has(key))
+            f.fail(key, "an oscillation under stress control is Sigma_xy = stress_amplitude sin(omega t); give "
+                        "stress_amplitude");
+        fl.stress_amplitude = f.number("stress_amplitude", Range::positive());
+      } else {
+        if (f.has("sigma_star") && f.has("shear_stress"))
+          f.fail("sigma_star", "give either shear_stress or sigma_star (adhesive laws), not both");
+        if (f.has("sigma_star"))
+          sigma_star = f.number("sigma_star", Range::positive());
+        else
+          fl.shear_stress = f.number("shear_stress", Range::positive());
+      }
       if (c.flow == "wavy") f.fail("control", "stress control is available for flow.type = simple_shear only");
     } else {
-      for (const char* key : {"shear_stress", "sigma_star"})
+      for (const char* key : {"shear_stress", "sigma_star", "stress_amplitude"})
         if (f.has(key))
           f.fail(key, "is a target of flow.control = stress; with control = rate give shear_rate only");
+      if (oscillatory) fl.strain_amplitude = f.number("strain_amplitude", Range::positive());
     }
     if (c.flow == "wavy") {
-      s.wave_amplitude = f.number("amplitude", Range{});
-      s.wave_periods = static_cast<int>(f.integer("periods", 1, 1, 1'000'000));
+      fl.wave_amplitude = f.number("amplitude", Range{});
+      fl.wave_periods = static_cast<int>(f.integer("periods", 1, 1, 1'000'000));
+    }
+    if (c.flow == "reversal") {
+      fl.reverse_at = f.number_list("reverse_at", Range::positive());
+      if (fl.reverse_at.empty()) f.fail("reverse_at", "missing; give the accumulated strain(s) at which to reverse");
+      for (std::size_t k = 1; k < fl.reverse_at.size(); ++k)
+        if (!(fl.reverse_at[k] > fl.reverse_at[k - 1])) f.fail("reverse_at", "the strains must increase");
     }
     f.finish();
   }
@@ -217,7 +247,7 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     if (!(f_adh > 0.0))
       throw InputError("flow.sigma_star: needs an adhesive contact law (contact.law = hertz_adhesive with g_adh > 0), "
                        "since sigma* = 6 pi Sigma_12 a_1^2 / F_adh; give flow.shear_stress instead");
-    c.simulation.shear_stress = *sigma_star * f_adh / (6.0 * std::numbers::pi);
+    c.simulation.flow.shear_stress = *sigma_star * f_adh / (6.0 * std::numbers::pi);
   }
   {
     SchemaReader r = top.child("run");
@@ -241,7 +271,7 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
                                   : Integrator::overdamped;
     if (c.simulation.integrator == Integrator::inertial) {
       c.simulation.stokes_number = r.number("stokes_number", c.simulation.stokes_number, Range::positive());
-      if (c.simulation.control == FlowControl::stress)
+      if (c.simulation.flow.control == FlowControl::stress)
         r.fail("integrator", "inertial is not available with flow.control = stress (use overdamped)");
     } else if (r.has("stokes_number")) {
       r.fail("stokes_number", "applies to run.integrator = inertial only");
@@ -259,11 +289,18 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     ts.growth = t.number("growth", ts.growth, Range::open_closed(1.0, 10.0));
     ts.displacement_per_compliance =
         t.number("displacement_per_compliance", ts.displacement_per_compliance, Range::positive());
+    // An oscillation stops the flow twice a cycle: floor the compliance bound there (time_step_control.hpp).
+    ts.min_displacement = t.number("min_displacement", c.simulation.flow.oscillatory() ? 0.01 * ts.max_displacement : 0.0,
+                                   Range::non_negative());
     t.finish();
 
     SchemaReader o = r.child("output");
     OutputCase& out = c.run.output;
     out.series_every = o.number("series_every", out.series_every, Range::positive());
+    if (c.simulation.flow.oscillatory())
+      out.series_per_cycle = static_cast<int>(o.integer("series_per_cycle", out.series_per_cycle, 8, 1'000'000));
+    else if (o.has("series_per_cycle"))
+      o.fail("series_per_cycle", "applies to flow.type = oscillatory only (the others write every series_every)");
     out.snapshot_every = o.number("snapshot_every", out.snapshot_every, Range::positive());
     out.checkpoint_every = o.number("checkpoint_every", out.checkpoint_every, Range::positive());
     out.checkpoint_seconds = o.number("checkpoint_seconds", out.checkpoint_seconds, Range::positive());
@@ -278,8 +315,9 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   if (c.hydrodynamics == "fcm") {
     if (c.simulation.time_step.implicit_contacts && !c.fcm.subgrid)
       throw InputError("run.time_step.contacts = implicit needs hydrodynamics.fcm.subgrid = true");
-    if (c.flow != "simple_shear")
-      throw InputError("flow.type = " + c.flow + " is not available with hydrodynamics.model = fcm (use simple_shear)");
+    if (c.flow == "wavy")
+      throw InputError("flow.type = wavy is not available with hydrodynamics.model = fcm (use simple_shear, "
+                       "oscillatory or reversal)");
     if (c.simulation.integrator != Integrator::overdamped)
       throw InputError("run.integrator = inertial is not available with hydrodynamics.model = fcm (use overdamped)");
     c.fcm.validate();
@@ -317,13 +355,27 @@ YAML::Node to_yaml(const Case& c) {
     n["box"]["length"]["y"] = number_node(c.box->y());
     n["box"]["length"]["z"] = number_node(c.box->z());
   }
+  const Flow& fl = c.simulation.flow;
   n["flow"]["type"] = c.flow;
-  n["flow"]["control"] = c.simulation.control == FlowControl::stress ? "stress" : "rate";
-  n["flow"]["shear_rate"] = number_node(c.simulation.shear_rate);
-  if (c.simulation.control == FlowControl::stress) n["flow"]["shear_stress"] = number_node(c.simulation.shear_stress);
+  n["flow"]["control"] = fl.control == FlowControl::stress ? "stress" : "rate";
+  if (!(fl.oscillatory() && fl.control == FlowControl::rate)) n["flow"]["shear_rate"] = number_node(fl.shear_rate);
+  if (fl.control == FlowControl::stress && !fl.oscillatory()) n["flow"]["shear_stress"] = number_node(fl.shear_stress);
   if (c.flow == "wavy") {
-    n["flow"]["amplitude"] = number_node(c.simulation.wave_amplitude);
-    n["flow"]["periods"] = c.simulation.wave_periods;
+    n["flow"]["amplitude"] = number_node(fl.wave_amplitude);
+    n["flow"]["periods"] = fl.wave_periods;
+  }
+  if (fl.oscillatory()) {
+    if (fl.control == FlowControl::stress)
+      n["flow"]["stress_amplitude"] = number_node(fl.stress_amplitude);
+    else
+      n["flow"]["strain_amplitude"] = number_node(fl.strain_amplitude);
+    n["flow"]["angular_frequency"] = number_node(fl.angular_frequency);
+    n["flow"]["steps_per_cycle"] = fl.steps_per_cycle;
+  }
+  if (c.flow == "reversal") {
+    YAML::Node at(YAML::NodeType::Sequence);
+    for (double x : fl.reverse_at) at.push_back(number_node(x));
+    n["flow"]["reverse_at"] = at;
   }
   n["hydrodynamics"]["model"] = c.hydrodynamics;
   if (c.hydrodynamics == "fcm") {
@@ -360,7 +412,7 @@ YAML::Node to_yaml(const Case& c) {
   r["average_from"] = number_node(c.run.average_from);
   r["seed"] = c.run.seed;
   r["threads"] = c.run.threads;
-  if (c.simulation.control == FlowControl::stress) {
+  if (c.simulation.flow.control == FlowControl::stress) {
     r["jammed"]["viscosity"] = number_node(c.run.jammed_viscosity);
     r["jammed"]["strain"] = number_node(c.run.jammed_strain);
   }
@@ -377,7 +429,9 @@ YAML::Node to_yaml(const Case& c) {
   r["time_step"]["contacts"] = ts.implicit_contacts ? "implicit" : "explicit";
   r["time_step"]["growth"] = number_node(ts.growth);
   r["time_step"]["displacement_per_compliance"] = number_node(ts.displacement_per_compliance);
+  if (ts.min_displacement > 0.0) r["time_step"]["min_displacement"] = number_node(ts.min_displacement);
   r["output"]["series_every"] = number_node(c.run.output.series_every);
+  if (c.simulation.flow.oscillatory()) r["output"]["series_per_cycle"] = c.run.output.series_per_cycle;
   r["output"]["snapshot_every"] = number_node(c.run.output.snapshot_every);
   r["output"]["checkpoint_every"] = number_node(c.run.output.checkpoint_every);
   r["output"]["checkpoint_seconds"] = number_node(c.run.output.checkpoint_seconds);

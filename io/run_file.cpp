@@ -15,9 +15,10 @@ struct Column {
   const char* units;  // lengths in a_1, times in 1/gammadot_ref, stresses in eta_0 gammadot_ref (docs/units.md)
   bool integer;
 };
-const std::array<Column, 13> scalar_columns = {{{"step", "1", true},
+const std::array<Column, 14> scalar_columns = {{{"step", "1", true},
                                                 {"time", "1/gammadot_ref", false},
                                                 {"strain", "1", false},
+                                                {"accumulated_strain", "1", false},
                                                 {"shear_rate", "gammadot_ref", false},
                                                 {"dt", "1/gammadot_ref", false},
                                                 {"contacts", "1", true},
@@ -43,6 +44,15 @@ void RunFile::open_tables(bool create) {
   tables_.clear();
   auto table = [&](const std::string& name, hsize_t width, const char* units, bool integer) {
     const std::string path = "series/" + name;
+    if (!create && name == "accumulated_strain" && !h5::exists(file_.id(), path)) {
+      // Files from before the column: their runs were steady, whose accumulated strain is the strain.
+      const h5::Table strain = h5::Table::open(file_.id(), "series/strain");
+      h5::Table t = h5::Table::create(file_.id(), path, width, 256, integer);
+      t.append_rows(strain.read_rows(strain.rows()).data(), strain.rows());
+      h5::set_attribute(file_.id(), path, "units", std::string(units));
+      tables_.emplace(name, std::move(t));
+      return;
+    }
     if (!create) {
       tables_.emplace(name, h5::Table::open(file_.id(), path));
       return;
@@ -142,6 +152,7 @@ void RunFile::append(const SeriesRow& row) {
   const double rate = row.shear_rate;
   const std::map<std::string, double> scalars = {
       {"step", static_cast<double>(row.step)}, {"time", row.time}, {"strain", row.strain},
+      {"accumulated_strain", row.accumulated_strain},
       {"shear_rate", rate}, {"dt", row.dt}, {"contacts", row.contacts}, {"max_overlap", row.max_overlap},
       {"eta_r", rh.shear / rate}, {"N1", rh.n1}, {"N2", rh.n2}, {"Pi", rh.pressure},
       {"solver_iterations", row.solver_iterations}, {"solver_residual", row.solver_residual}};
@@ -191,6 +202,7 @@ void RunFile::write_snapshot(const Snapshot& s) {
   h5::set_attribute(file_.id(), g, "step", s.step);
   h5::set_attribute(file_.id(), g, "time", s.time);
   h5::set_attribute(file_.id(), g, "strain", s.strain);
+  h5::set_attribute(file_.id(), g, "accumulated_strain", s.accumulated_strain);
   h5::set_attribute(file_.id(), g, "shear_offset", s.box.shear_offset());
   h5::write(file_.id(), g + "/box", std::vector<double>{s.box.length().x(), s.box.length().y(), s.box.length().z()},
             {3});

@@ -27,6 +27,7 @@ inline constexpr std::array<const char*, 6> tensor_components = {"xx", "yy", "zz
 struct SeriesRow {
   std::int64_t step = 0;
   double time = 0.0, strain = 0.0, shear_rate = 1.0, dt = 0.0;
+  double accumulated_strain = 0.0;  // integral of |gammadot| dt (core/flow.hpp)
   double contacts = 0.0, max_overlap = 0.0;
   // Iterations and relative residual of the step's hydrodynamic solve (pairwise: conjugate gradient; FCM: GMRES,
   // both parts under stress control); zero without a solve.
@@ -36,7 +37,7 @@ struct SeriesRow {
 
 struct Snapshot {
   std::int64_t step = 0;
-  double time = 0.0, strain = 0.0;
+  double time = 0.0, strain = 0.0, accumulated_strain = 0.0;
   Box box;
   const Particles* particles = nullptr;
   // The contacts only (pairs on which the contact law exerts a normal force, docs/output.md), in pair order:

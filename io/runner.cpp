@@ -38,6 +38,12 @@ extern "C" void on_stop_signal(int sig) { stop_signal.store(sig); }
 
 std::string join(const fs::path& dir, const char* name) { return (dir / name).string(); }
 
+// The strain a run's length, outputs and averaging window count: signed for steady shear, accumulated for the
+// other protocols (core/flow.hpp).
+double progress_strain(const Flow& flow, const SimulationState& st) {
+  return flow.steady() ? st.strain : st.accumulated_strain;
+}
+
 // First multiple of `every` strictly above `strain`.
 double next_multiple(double strain, double every) { return (std::floor(strain / every + 1e-9) + 1.0) * every; }
 
@@ -64,6 +70,7 @@ Snapshot snapshot_of(const Sim& sim) {
   s.step = st.step;
   s.time = st.time;
   s.strain = st.strain;
+  s.accumulated_strain = st.accumulated_strain;
   s.box = sim.box();
   s.particles = &st.particles;
   const std::vector<Vec3>& f = sim.pair_forces();
@@ -176,9 +183,10 @@ int run_case(const Case& c, const RunOptions& o) {
     clock.next_snapshot = 0.0;
     clock.next_checkpoint = every.checkpoint_every;
   }
-  if (state.strain >= c.run.strain)
+  const Flow& flow = c.simulation.flow;
+  if (progress_strain(flow, state) >= c.run.strain)
     throw InputError("run.strain = " + exact(c.run.strain) + " is already reached by the checkpoint (strain " +
-                     exact(state.strain) + "); raise it with --set run.strain=...");
+                     exact(progress_strain(flow, state)) + "); raise it with --set run.strain=...");
   auto run = [&](auto& sim) -> int {
 
     {
@@ -192,7 +200,8 @@ int run_case(const Case& c, const RunOptions& o) {
     const std::string run_path = join(dir, "run.h5"), checkpoint_path = join(dir, "checkpoint.h5");
     RunFile file = restarting && !branching ? RunFile::reopen(run_path, clock.series_rows, clock.snapshots)
                               : RunFile::create(run_path, {to_yaml_text(c), threads});
-    Progress progress(Progress::detect(o.quiet), c.run.strain, sim.state().strain);
+    auto progress_of = [&] { return progress_strain(flow, sim.state()); };
+    Progress progress(Progress::detect(o.quiet), c.run.strain, progress_of());
     progress.message(origin);
     if (!file.salvaged().empty())
       progress.message("note: " + run_path + " was damaged (" + file.salvaged() + "); rebuilt from the " +
@@ -204,13 +213,13 @@ int run_case(const Case& c, const RunOptions& o) {
 
     OutputRoom room;
     // Strain of the last complete checkpoint on disk (none yet: negative).
-    double checkpoint_strain = restarting && !branching ? sim.state().strain : -1.0;
+    double checkpoint_strain = restarting && !branching ? progress_of() : -1.0;
     auto save = [&] {
       file.flush();
       clock.series_rows = static_cast<std::int64_t>(file.series_rows());
       clock.snapshots = static_cast<std::int64_t>(file.snapshot_count());
       write_checkpoint(checkpoint_path, {sim.state_with_contacts(), clock, fingerprint, serialize(rng), threads});
-      checkpoint_strain = sim.state().strain;
+      checkpoint_strain = progress_of();
     };
     auto finish_outputs = [&] {
       file.flush();
@@ -220,8 +229,8 @@ int run_case(const Case& c, const RunOptions& o) {
     auto write_summary = [&](double average_from, const nlohmann::json& extra) {
       nlohmann::json summary =
           summarize(file.id(), {sim.state().particles.volume() / sim.box().volume(), sim.state().particles.size(),
-                                average_from, c.simulation.control == FlowControl::stress,
-                                adhesion_force(c.simulation.contact)});
+                                average_from, flow.control == FlowControl::stress,
+                                adhesion_force(c.simulation.contact), flow});
       summary.update(extra);
       // What produced it: the resolved case, the program and this invocation's wall time and threads.
       summary["case"] = yaml_to_json(to_yaml(c));
@@ -241,7 +250,7 @@ int run_case(const Case& c, const RunOptions& o) {
     // A run that ends before run.strain (stopped, jammed, failed) still summarises what it did: from
     // run.average_from, or from half its strain when it did not get there. Returns the window's start.
     auto write_partial_summary = [&](const char* status, nlohmann::json extra) {
-      const double from = std::min(c.run.average_from, 0.5 * sim.state().strain);
+      const double from = std::min(c.run.average_from, 0.5 * progress_of());
       extra["status"] = status;
       try {
         write_summary(from, extra);
@@ -275,20 +284,25 @@ int run_case(const Case& c, const RunOptions& o) {
     constexpr double max_steps = max_run_steps;
     constexpr int slow_steps_allowed = 1000;    // steps in a row at a pace beyond max_steps before the run stops
     int slow_steps = 0;
-    double slow_start_strain = sim.state().strain;
+    double slow_start_strain = progress_of();
     try {
       for (;;) {
         remember_step_start();
         evaluating = true;
         sim.evaluate();
         evaluating = false;
-        const double strain = sim.state().strain;
+        const double strain = progress_of();
         const double eps = 1e-9;
-        if (strain >= clock.next_series - eps) {
+        // Oscillation: series rows evenly in time, run.output.series_per_cycle per cycle (the harmonic analysis
+        // of io/oscillatory_response.hpp integrates over them); otherwise every series_every of strain.
+        const double series_clock = flow.oscillatory() ? sim.state().time : strain;
+        const double series_every = flow.oscillatory() ? flow.period() / every.series_per_cycle : every.series_every;
+        if (series_clock >= clock.next_series - eps * (flow.oscillatory() ? series_every : 1.0)) {
           SeriesRow row;
           row.step = sim.state().step;
           row.time = sim.state().time;
-          row.strain = strain;
+          row.strain = sim.state().strain;
+          row.accumulated_strain = sim.state().accumulated_strain;
           row.shear_rate = sim.shear_rate();
           row.dt = sim.time_step();
           row.contacts = static_cast<double>(sim.contact_count());
@@ -297,7 +311,7 @@ int run_case(const Case& c, const RunOptions& o) {
           row.solver_residual = sim.solver_residual();
           row.stress = sim.stress();
           file.append(row);
-          clock.next_series = next_multiple(strain, every.series_every);
+          clock.next_series = next_multiple(series_clock, series_every);
           if (strain >= c.run.average_from) {
             stress_sum += row.stress.total()(0, 1);
             rate_sum += row.shear_rate;
@@ -310,29 +324,32 @@ int run_case(const Case& c, const RunOptions& o) {
         progress.update(strain, sim.state().step,
                         rate_sum != 0.0 ? stress_sum / rate_sum : sim.stress().total()(0, 1) / sim.shear_rate());
         if (strain >= c.run.strain - eps) {
-          if (file.snapshot_count() == 0 || file.snapshots().back().strain < strain - eps)
+          if (file.snapshot_count() == 0 || file.snapshots().back().time < sim.state().time)
             file.write_snapshot(snapshot_of(sim));  // the final state, also when run.strain is between snapshots
           break;
         }
 
-        // The last step ends on run.strain, not past it.
-        if (const double left = c.run.strain - strain; sim.shear_rate() * sim.time_step() > left)
-          sim.clip_time_step(left / sim.shear_rate());
+        // The last step ends on run.strain, not past it; a reversal step ends on its strain.
+        const double pace = flow.progress_rate(sim.shear_rate());
+        if (const double left = c.run.strain - strain; pace * sim.time_step() > left) sim.clip_time_step(left / pace);
+        if (const double left = flow.next_reversal(sim.state().accumulated_strain) - sim.state().accumulated_strain;
+            std::abs(sim.shear_rate()) * sim.time_step() > left)
+          sim.clip_time_step(left / std::abs(sim.shear_rate()));
         sim.advance();
         check_finite(sim.state());
         // A step or rate that collapsed mid-run (the time step a case implies is checked before it starts).
-        if (std::abs(sim.state().strain - strain) * max_steps < c.run.strain) {
+        if (std::abs(progress_of() - strain) * max_steps < c.run.strain) {
           if (++slow_steps == slow_steps_allowed) {
             std::ostringstream s;
             s << "no progress: the last " << slow_steps << " steps advanced the strain by "
-              << std::abs(sim.state().strain - slow_start_strain) << " in all (time step " << sim.time_step()
+              << std::abs(progress_of() - slow_start_strain) << " in all (time step " << sim.time_step()
               << ", shear rate " << sim.shear_rate() << "); at this pace run.strain = " << c.run.strain
               << " needs more than " << max_steps << " steps";
             throw NumericalError(s.str());
           }
         } else {
           slow_steps = 0;
-          slow_start_strain = sim.state().strain;
+          slow_start_strain = progress_of();
         }
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
         if (const int sig = stop_signal.load()) {
@@ -340,17 +357,17 @@ int run_case(const Case& c, const RunOptions& o) {
           finish_outputs();
           progress.finish();
           write_partial_summary("stopped", {});
-          std::cerr << "stopped by signal " << sig << " at strain " << sim.state().strain
+          std::cerr << "stopped by signal " << sig << " at strain " << progress_of()
                     << "; continue with: " << restart_command(c, checkpoint_path) << "\n";
           return 128 + sig;
         }
-        if (c.simulation.control == FlowControl::stress) {
+        if (flow.control == FlowControl::stress && !flow.oscillatory()) {
           // Jammed below the yield stress: the mean rate over a window stays below Sigma / jammed_viscosity.
-          const double window = c.run.jammed_strain * c.run.jammed_viscosity / c.simulation.shear_stress;
+          const double window = c.run.jammed_strain * c.run.jammed_viscosity / flow.shear_stress;
           const SimulationState& st = sim.state();
           if (st.time - clock.jam_window_time >= window) {
-            if (st.strain - clock.jam_window_strain < c.run.jammed_strain) {
-              const double rate = (st.strain - clock.jam_window_strain) / (st.time - clock.jam_window_time);
+            if (progress_of() - clock.jam_window_strain < c.run.jammed_strain) {
+              const double rate = (progress_of() - clock.jam_window_strain) / (st.time - clock.jam_window_time);
               file.write_snapshot(snapshot_of(sim));
               save();
               finish_outputs();
@@ -358,27 +375,27 @@ int run_case(const Case& c, const RunOptions& o) {
               const double from = write_partial_summary(
                   "jammed", {{"jammed", {{"mean_shear_rate", rate},
                                          {"over_time", st.time - clock.jam_window_time},
-                                         {"threshold", c.simulation.shear_stress / c.run.jammed_viscosity}}}});
+                                         {"threshold", flow.shear_stress / c.run.jammed_viscosity}}}});
               std::fprintf(stderr,
                            "jammed: the mean shear rate was %.3g over the last %.4g time units (threshold "
                            "Sigma/run.jammed.viscosity = %.3g) at strain %.4g; summary.json averages from strain "
                            "%.4g\n",
-                           rate, st.time - clock.jam_window_time, c.simulation.shear_stress / c.run.jammed_viscosity,
-                           st.strain, from);
+                           rate, st.time - clock.jam_window_time, flow.shear_stress / c.run.jammed_viscosity,
+                           progress_of(), from);
               file.close();
               return exit_jammed;
             }
             clock.jam_window_time = st.time;
-            clock.jam_window_strain = st.strain;
+            clock.jam_window_strain = progress_of();
           }
         }
-        if (sim.state().strain >= clock.next_checkpoint - eps || wall >= every.checkpoint_seconds) {
-          clock.next_checkpoint = next_multiple(sim.state().strain, every.checkpoint_every);
+        if (progress_of() >= clock.next_checkpoint - eps || wall >= every.checkpoint_seconds) {
+          clock.next_checkpoint = next_multiple(progress_of(), every.checkpoint_every);
           save();
           wall0 = std::chrono::steady_clock::now();
           if (const std::optional<std::string> full = room.after_checkpoint(run_path, checkpoint_path)) {
             progress.finish();
-            std::cerr << "error: " << *full << "; stopped at the checkpoint of strain " << sim.state().strain
+            std::cerr << "error: " << *full << "; stopped at the checkpoint of strain " << progress_of()
                       << " while everything is complete; once there is room, continue with: "
                       << restart_command(c, checkpoint_path) << "\n";
             return exit_output_error;
@@ -407,7 +424,8 @@ int run_case(const Case& c, const RunOptions& o) {
       write_checkpoint(checkpoint_path, {good.state, good.clock, fingerprint, serialize(rng), threads});
       finish_outputs();
       write_partial_summary("failed", {{"error", e.what()}});
-      std::cerr << "error: " << e.what() << "\nthe state before the failing step (strain " << good.state.strain
+      std::cerr << "error: " << e.what() << "\nthe state before the failing step (strain "
+                << progress_strain(flow, good.state)
                 << ", step " << good.state.step << ") is in " << checkpoint_path << "; the failing state is snapshot "
                 << file.snapshot_count() - 1 << " of " << run_path << "\n";
       return exit_numerical_error;
@@ -430,7 +448,7 @@ int run_case(const Case& c, const RunOptions& o) {
                   v("G_adh", "mean"), v("G_adh", "sem"));
     std::printf("eta_r = %.5g +- %.2g   N1 = %.4g +- %.2g   N2 = %.4g +- %.2g   Pi = %.4g +- %.2g   (strain %.3g-%.3g, %zu samples)\n",
                 v("eta_r", "mean"), v("eta_r", "sem"), v("N1", "mean"), v("N1", "sem"), v("N2", "mean"),
-                v("N2", "sem"), v("Pi", "mean"), v("Pi", "sem"), c.run.average_from, sim.state().strain,
+                v("N2", "sem"), v("Pi", "mean"), v("Pi", "sem"), c.run.average_from, progress_of(),
                 summary["samples"].get<std::size_t>());
     return 0;
   };

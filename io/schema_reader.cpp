@@ -95,6 +95,27 @@ double SchemaReader::number(const std::string& key, Range range) {
   return *optional_number(key, range);
 }
 
+std::vector<double> SchemaReader::number_list(const std::string& key, Range range) {
+  std::vector<double> out;
+  if (!has(key)) return out;
+  const YAML::Node v = node_[key];
+  if (v.IsMap()) fail(key, "expected a number or a list of numbers, got a mapping");
+  if (v.IsScalar()) return {*optional_number(key, range)};
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const std::string item = key + "[" + std::to_string(k) + "]";
+    if (!v[k].IsScalar()) fail(item, "expected a number");
+    double x = 0.0;
+    try {
+      x = v[k].as<double>();
+    } catch (const YAML::Exception&) {
+      fail(item, "'" + v[k].Scalar() + "' is not a number (expected " + range.describe() + ")");
+    }
+    if (!range.contains(x)) fail(item, exact(x) + " is out of range: must be " + range.describe());
+    out.push_back(x);
+  }
+  return out;
+}
+
 std::optional<long> SchemaReader::optional_integer(const std::string& key, long lo, long hi) {
   if (!has(key)) return std::nullopt;
   const YAML::Node v = scalar(key);
@@ -165,7 +186,7 @@ void SchemaReader::finish() const {
   std::vector<std::string> allowed(asked_.begin(), asked_.end());
   for (const auto& kv : node_) {
     const std::string key = kv.first.as<std::string>();
-    if (asked_.count(key)) continue;
+    if (asked_.count(key) || kv.second.IsNull()) continue;  // `key: null` (--set key=null) is the key left out
     throw InputError(key_path(key) + ": unknown key" + suggestion(closest_word(key, allowed)) +
                      " (allowed here: " + join_words(allowed) + ")");
   }

@@ -39,6 +39,8 @@ class SchemaReader {
   double number(const std::string& key, double fallback, Range range = {});
   double number(const std::string& key, Range range);  // required
   std::optional<double> optional_number(const std::string& key, Range range = {});
+  // One number or a list of numbers, each in range (absent: empty).
+  std::vector<double> number_list(const std::string& key, Range range = {});
   long integer(const std::string& key, long fallback, long lo, long hi);
   std::optional<long> optional_integer(const std::string& key, long lo, long hi);
   bool boolean(const std::string& key, bool fallback);

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <limits>
 #include <stdexcept>
 
 #include "analysis/contact_network.hpp"
 #include "core/stress.hpp"
 #include "io/run_file.hpp"
+#include "io/oscillatory_response.hpp"
 #include "io/snapshot_reader.hpp"
 #include "io/statistics.hpp"
 
@@ -43,12 +45,15 @@ nlohmann::json observables(hid_t f, const std::string& series, const std::vector
 }
 // Window averages over the snapshots (analysis/; docs/output.md "Microstructure"): the contact network is not in the
 // series, so these are means over the snapshots with strain >= from.
-nlohmann::json microstructure(hid_t f, double from) {
+nlohmann::json microstructure(hid_t f, double from, const char* strain_attribute) {
   std::vector<double> sliding, rattlers, largest, spanning;
   bool details = true;
   const std::size_t count = snapshot_count(f);
   for (std::size_t k = 0; k < count; ++k) {
-    if (h5::double_attribute(f, snapshot_group(k), "strain") < from) continue;
+    const std::string g = snapshot_group(k);
+    const double strain = h5::has_attribute(f, g, strain_attribute) ? h5::double_attribute(f, g, strain_attribute)
+                                                                     : h5::double_attribute(f, g, "strain");
+    if (strain < from) continue;
     const analysis::Configuration c = read_configuration(f, k);
     if (c.size() == 0) continue;
     const analysis::ContactNumbers z = analysis::contact_numbers(c);
@@ -69,10 +74,78 @@ nlohmann::json microstructure(hid_t f, double from) {
   return j;
 }
 
+nlohmann::json optional_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+// eta', eta'' of the total stress and of each contribution, the amplitudes and the response's harmonics.
+nlohmann::json oscillation(hid_t f, const SummaryContext& ctx, double from_time, double* rate_amplitude) {
+  const std::vector<double> t = read_series(f, "time"), rate = read_series(f, "shear_rate");
+  const double omega = ctx.flow.angular_frequency;
+  const bool stress_control = ctx.flow.control == FlowControl::stress;
+  auto of = [&](const std::string& series) {
+    return oscillatory_response(t, read_series(f, series, 3), rate, omega, from_time, stress_control);
+  };
+  const OscillatoryResponse total = of("stress/total");
+  *rate_amplitude = total.strain_amplitude * omega;
+  nlohmann::json j;
+  j["angular_frequency"] = omega;
+  j["period"] = ctx.flow.period();
+  j["cycles"] = total.cycles;
+  j["from_time"] = from_time;
+  auto both = [](const OscillatoryResponse& r) {
+    return nlohmann::json{
+        {"eta_prime", {{"mean", optional_number(r.eta_prime.mean)}, {"sem", optional_number(r.eta_prime.sem)}}},
+        {"eta_double_prime",
+         {{"mean", optional_number(r.eta_double_prime.mean)}, {"sem", optional_number(r.eta_double_prime.sem)}}}};
+  };
+  j.update(both(total));
+  j["G_prime"] = optional_number(omega * total.eta_double_prime.mean);
+  j["G_double_prime"] = optional_number(omega * total.eta_prime.mean);
+  j["strain_amplitude"] = optional_number(total.strain_amplitude);
+  j["stress_amplitude"] = optional_number(total.stress_amplitude);
+  j["harmonics"] = {{"response", stress_control ? "shear_rate" : "shear_stress"},
+                    {"I3_I1", optional_number(total.harmonics[0])},
+                    {"I5_I1", optional_number(total.harmonics[1])},
+                    {"I7_I1", optional_number(total.harmonics[2])}};
+  for (auto name : contribution_names)
+    j["contributions"][std::string(name)] = both(of("stress/" + std::string(name)));
+  return j;
+}
+
+// Each reversal's transient: the viscosity Sigma_xy / gammadot over the last strain unit before it, its minimum
+// after it and where, and its mean over the last strain unit before the next reversal or the end.
+nlohmann::json reversals(hid_t f, const SummaryContext& ctx) {
+  const std::vector<double> strain = read_series(f, "accumulated_strain"), rate = read_series(f, "shear_rate");
+  const std::vector<double> sxy = read_series(f, "stress/total", 3);
+  nlohmann::json out = nlohmann::json::array();
+  const std::vector<double>& at = ctx.flow.reverse_at;
+  const double end = strain.empty() ? 0.0 : strain.back();
+  for (std::size_t k = 0; k < at.size() && at[k] < end; ++k) {
+    const double next = k + 1 < at.size() ? std::min(at[k + 1], end) : end;
+    std::vector<double> before, after;
+    double eta_min = std::numeric_limits<double>::infinity(), strain_of_min = 0.0;
+    for (std::size_t r = 0; r < strain.size(); ++r) {
+      const double eta = sxy[r] / rate[r];
+      if (strain[r] >= at[k] - 1.0 && strain[r] < at[k] * (1.0 - 1e-12)) before.push_back(eta);
+      if (strain[r] > at[k] * (1.0 + 1e-12) && strain[r] <= next) {
+        if (eta < eta_min) eta_min = eta, strain_of_min = strain[r] - at[k];
+        if (strain[r] >= next - 1.0) after.push_back(eta);
+      }
+    }
+    out.push_back({{"at_strain", at[k]},
+                   {"eta_before", before.empty() ? nlohmann::json() : entry(block_average(before, 4))},
+                   {"eta_min", std::isfinite(eta_min) ? nlohmann::json(eta_min) : nlohmann::json()},
+                   {"strain_of_min", strain_of_min},
+                   {"eta_after", after.empty() ? nlohmann::json() : entry(block_average(after, 4))},
+                   {"after_to_strain", next}});
+  }
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
-  const std::vector<double> strain = read_series(f, "strain");
+  const bool steady = ctx.flow.steady();
+  const std::vector<double> strain = read_series(f, steady ? "strain" : "accumulated_strain");
   const std::vector<double> rate = read_series(f, "shear_rate");
   std::vector<std::size_t> window;
   for (std::size_t r = 0; r < strain.size(); ++r)
@@ -80,9 +153,20 @@ nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
   nlohmann::json j;
   std::vector<double> window_rate;
   for (std::size_t r : window) window_rate.push_back(rate[r]);
-  const MeanWithError mean_rate = block_average(window_rate);
+  MeanWithError mean_rate = block_average(window_rate);
   const MeanWithError* by_mean = ctx.stress_control ? &mean_rate : nullptr;
-  j["note"] = ctx.stress_control
+  nlohmann::json oscillatory;
+  MeanWithError rate_amplitude;
+  if (ctx.flow.oscillatory()) {
+    const std::vector<double> t = read_series(f, "time");
+    const double from_time = window.empty() ? (t.empty() ? 0.0 : t.back()) : t[window.front()];
+    oscillatory = oscillation(f, ctx, from_time, &rate_amplitude.mean);
+    by_mean = &rate_amplitude;  // N1, N2, Pi over the rate amplitude; eta_r below is eta'
+  }
+  j["note"] = ctx.flow.oscillatory()
+                  ? "oscillatory shear: eta_r is eta' (io/oscillatory_response.hpp); N1, N2, Pi are window means "
+                    "divided by eta_0 times the shear-rate amplitude"
+              : ctx.stress_control
                   ? "imposed shear stress: stresses are divided by eta_0 times the mean shear rate of the window"
                   : "normal stresses and pressure are divided by eta_0 times the shear rate of each sample";
   j["shear_rate"] = entry(mean_rate);
@@ -94,6 +178,13 @@ nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
   for (const auto& [k, v] : total.items()) j[k] = v;
   for (auto name : contribution_names)
     j["contributions"][std::string(name)] = observables(f, "stress/" + std::string(name), rate, window, by_mean);
+  if (ctx.flow.oscillatory()) {
+    j["eta_r"] = oscillatory["eta_prime"];
+    for (auto name : contribution_names)
+      j["contributions"][std::string(name)]["eta_r"] = oscillatory["contributions"][std::string(name)]["eta_prime"];
+    j["oscillatory"] = oscillatory;
+  }
+  if (ctx.flow.protocol == FlowProtocol::reversal) j["reversals"] = reversals(f, ctx);
   std::vector<double> contacts = read_series(f, "contacts"), overlap = read_series(f, "max_overlap");
   std::vector<double> wc, wo;
   for (std::size_t r : window) wc.push_back(contacts[r]), wo.push_back(overlap[r]);
@@ -103,7 +194,7 @@ nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
   // Z, the mean number of contacts of a particle: every contact (pair) touches two particles.
   j["contacts_per_particle"] = entry({2.0 * z.mean / n, 2.0 * z.sem / n});
   j["max_overlap"] = entry(block_average(wo));
-  j["microstructure"] = microstructure(f, ctx.average_from);
+  j["microstructure"] = microstructure(f, ctx.average_from, steady ? "strain" : "accumulated_strain");
   if (ctx.adhesion_force > 0.0) {
     // Paper 004: sigma* = 6 pi Sigma_xy a_1^2 / F_adh, G_adh = F_adh / (6 pi eta_0 a_1^2 gammadot).
     const std::vector<double> sxy = read_series(f, "stress/total", 3);

@@ -32,6 +32,9 @@ struct TimeStepParams {
   bool implicit_contacts = false;    // overdamped: backward-Euler contact springs (implicit_contacts.hpp)
   double growth = 1.5;               // implicit contacts: largest ratio of one step to the last
   double displacement_per_compliance = 4.0;  // implicit contacts: displacement bound in mean compliance lengths
+  // Implicit contacts: the compliance bound never below this (a_1). Where the flow stops (the turning points of an
+  // oscillation) the contacts relax and their compliance goes to zero, and the step with it; 0: no floor.
+  double min_displacement = 0.0;
   void validate() const {
     if (mode == Mode::fixed && !(fixed > 0.0)) throw InputError("run.time_step.fixed must be > 0");
     if (!(max_displacement > 0.0)) throw InputError("run.time_step.max_displacement must be > 0");
@@ -39,6 +42,8 @@ struct TimeStepParams {
     if (!(growth > 1.0)) throw InputError("run.time_step.growth must be > 1");
     if (!(displacement_per_compliance > 0.0))
       throw InputError("run.time_step.displacement_per_compliance must be > 0");
+    if (!(min_displacement >= 0.0 && min_displacement <= max_displacement))
+      throw InputError("run.time_step.min_displacement must lie in [0, max_displacement]");
   }
 };
 
@@ -67,7 +72,7 @@ inline double overdamped_time_step(const TimeStepParams& ts, const ContactLaw& l
   const double range = contact_range(law);
   if (range > 0.0) displacement = std::min(displacement, 0.1 * range);
   if (ts.implicit_contacts && compliance > 0.0)
-    displacement = std::min(displacement, ts.displacement_per_compliance * compliance);
+    displacement = std::max(std::min(displacement, ts.displacement_per_compliance * compliance), ts.min_displacement);
   if (max_speed > 0.0) dt = std::min(dt, displacement / max_speed);
   const double explicit_bound = explicit_contact_time_step(ts, law, a_min);
   if (!ts.implicit_contacts) return std::min(dt, explicit_bound);

@@ -41,7 +41,7 @@ TEST(Case, ValidCaseFillsDefaults) {
   EXPECT_DOUBLE_EQ(c.particles.phi, 0.4);
   ASSERT_EQ(c.particles.species.size(), 2u);
   EXPECT_DOUBLE_EQ(c.particles.species[1].radius, 1.4);
-  EXPECT_DOUBLE_EQ(c.simulation.shear_rate, 1.0);
+  EXPECT_DOUBLE_EQ(c.simulation.flow.shear_rate, 1.0);
   EXPECT_EQ(c.hydrodynamics, "pairwise");
   EXPECT_DOUBLE_EQ(c.run.average_from, 0.4);  // default: the first 20% of the strain is transient
 }
@@ -121,7 +121,7 @@ TEST(Case, OverrideCreatesNestedKeys) {
   apply_override(root, "flow.shear_rate=2");
   const Case c = parse_case(root, "");
   EXPECT_DOUBLE_EQ(c.run.output.series_every, 0.5);
-  EXPECT_DOUBLE_EQ(c.simulation.shear_rate, 2.0);
+  EXPECT_DOUBLE_EQ(c.simulation.flow.shear_rate, 2.0);
 }
 
 TEST(Case, ResolvedYamlReadsBackToTheSameCase) {
@@ -199,11 +199,11 @@ TEST(CaseContact, KeysOfAnotherLawAreUnknown) {
 
 TEST(Case, FlowControlWaveIntegratorAndModelKeys) {
   const Case s = parse_case(YAML::Load(std::string(base) + "flow: {control: stress, shear_stress: 5}\n"), "");
-  EXPECT_EQ(s.simulation.control, FlowControl::stress);
-  EXPECT_DOUBLE_EQ(s.simulation.shear_stress, 5.0);
+  EXPECT_EQ(s.simulation.flow.control, FlowControl::stress);
+  EXPECT_DOUBLE_EQ(s.simulation.flow.shear_stress, 5.0);
   const Case w = parse_case(YAML::Load(std::string(base) + "flow: {type: wavy, amplitude: 20}\n"), "");
-  EXPECT_DOUBLE_EQ(w.simulation.wave_amplitude, 20.0);
-  EXPECT_EQ(w.simulation.wave_periods, 1);
+  EXPECT_DOUBLE_EQ(w.simulation.flow.wave_amplitude, 20.0);
+  EXPECT_EQ(w.simulation.flow.wave_periods, 1);
   const Case f = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm, fcm: {grid_spacing: 0.4}}\n"), "");
   EXPECT_EQ(f.hydrodynamics, "fcm");
   EXPECT_DOUBLE_EQ(f.fcm.grid_spacing, 0.4);
@@ -219,7 +219,7 @@ TEST(Case, FlowControlWaveIntegratorAndModelKeys) {
             std::string::npos);
   const Case fs = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm}\n"
                                                             "flow: {control: stress, shear_stress: 1}\n"), "");
-  EXPECT_EQ(fs.simulation.control, FlowControl::stress);
+  EXPECT_EQ(fs.simulation.flow.control, FlowControl::stress);
   EXPECT_NE(error_of(std::string(base) + "hydrodynamics: {model: fcm}\nflow: {type: wavy, amplitude: 1}\n")
                 .find("flow.type"), std::string::npos);
   YAML::Node implicit = YAML::Load(std::string(base) + "hydrodynamics: {lubrication: {enabled: true}}\n");
@@ -242,7 +242,7 @@ TEST(Case, SigmaStarSetsTheImposedStressFromTheAdhesionForce) {
   apply_override(root, "contact={law: hertz_adhesive, g_adh: 2.5, gamma_bar: 0.36}");
   apply_override(root, "flow={control: stress, sigma_star: 0.7}");
   const Case c = parse_case(root, "");
-  EXPECT_NEAR(c.simulation.shear_stress, 0.7 * 2.5, 1e-12);
+  EXPECT_NEAR(c.simulation.flow.shear_stress, 0.7 * 2.5, 1e-12);
   EXPECT_EQ(to_yaml_text(parse_case(to_yaml(c), "")), to_yaml_text(c));
   EXPECT_NE(error_of(base, {"flow={control: stress, sigma_star: 1}"}).find("flow.sigma_star: needs an adhesive"),
             std::string::npos);

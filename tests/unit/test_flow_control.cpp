@@ -29,8 +29,8 @@ TEST(StressControl, DiluteSuspensionShearsAtTheTargetOverTheEinsteinViscosity) {
   for (bool lubrication : {false, true}) {
     SimulationParams params;
     params.lubrication = lubrication;
-    params.control = FlowControl::stress;
-    params.shear_stress = 3.0;
+    params.flow.control = FlowControl::stress;
+    params.flow.shear_stress = 3.0;
     PairwiseSimulation sim(st, box, params);
     sim.evaluate();
     EXPECT_NEAR(sim.shear_rate(), 3.0 / (1.0 + 2.5 * phi), 1e-12) << "lubrication " << lubrication;
@@ -45,8 +45,8 @@ TEST(StressControl, HitsTheTargetWithContactsAndLubricationAndEqualsTheRateContr
   SimulationParams params;
   params.lubrication = true;
   params.contact = ComposedLaw<SoftRepulsion>{SoftRepulsion{{1.0e3}}, {}};
-  params.control = FlowControl::stress;
-  params.shear_stress = 2.5;
+  params.flow.control = FlowControl::stress;
+  params.flow.shear_stress = 2.5;
   params.resistance.tolerance = 1e-12;
   auto st = cluster();
   st.strain = 0.3;
@@ -55,8 +55,8 @@ TEST(StressControl, HitsTheTargetWithContactsAndLubricationAndEqualsTheRateContr
   EXPECT_NEAR(stress.stress().total()(0, 1), 2.5, 1e-9);
   EXPECT_GT(stress.contact_count(), 0u);
 
-  params.control = FlowControl::rate;
-  params.shear_rate = stress.shear_rate();
+  params.flow.control = FlowControl::rate;
+  params.flow.shear_rate = stress.shear_rate();
   st.shear_rate = stress.shear_rate();
   PairwiseSimulation rate(st, box, params);
   rate.evaluate();
@@ -70,8 +70,8 @@ TEST(StressControl, CheckpointedStateContinuesBitForBit) {
   SimulationParams params;
   params.lubrication = true;
   params.contact = ComposedLaw<SoftRepulsion>{SoftRepulsion{{1.0e3}}, {}};
-  params.control = FlowControl::stress;
-  params.shear_stress = 2.0;
+  params.flow.control = FlowControl::stress;
+  params.flow.shear_stress = 2.0;
   PairwiseSimulation whole(cluster(), box, params);
   for (int s = 0; s < 6; ++s) whole.advance();
   PairwiseSimulation first(cluster(), box, params);
@@ -94,8 +94,8 @@ TEST(WavyShear, LoneSphereMovesWithTheFaxenVelocityAndAddsItsFaxenStresslet) {
   for (bool lubrication : {false, true}) {
     SimulationParams params;
     params.lubrication = lubrication;
-    params.wave_amplitude = amplitude;
-    params.wave_periods = 1;
+    params.flow.wave_amplitude = amplitude;
+    params.flow.wave_periods = 1;
     PairwiseSimulation sim(st, box, params);
     sim.evaluate();
     const Particles& p = sim.state().particles;
@@ -110,14 +110,14 @@ TEST(WavyShear, LoneSphereMovesWithTheFaxenVelocityAndAddsItsFaxenStresslet) {
 
 TEST(FlowControl, InconsistentSettingsAreRefusedNamingTheKey) {
   SimulationParams params;
-  params.control = FlowControl::stress;
+  params.flow.control = FlowControl::stress;
   params.integrator = Integrator::inertial;
   EXPECT_THROW(params.validate(), InputError);
   params.integrator = Integrator::overdamped;
-  params.wave_amplitude = 1.0;
-  params.wave_periods = 1;
+  params.flow.wave_amplitude = 1.0;
+  params.flow.wave_periods = 1;
   EXPECT_THROW(params.validate(), InputError);
-  params.control = FlowControl::rate;
-  params.wave_periods = 0;
+  params.flow.control = FlowControl::rate;
+  params.flow.wave_periods = 0;
   EXPECT_THROW(params.validate(), InputError);
 }

@@ -97,7 +97,7 @@ TEST(ImplicitContacts, SqueezedPairRelaxesAsTheExactBackwardEulerRecursionAtAnyS
   SimulationParams params;
   params.lubrication = true;
   params.resistance.tolerance = 1e-13;
-  params.shear_rate = 0.0;
+  params.flow.shear_rate = 0.0;
   params.contact = ComposedLaw<SoftRepulsion>{SoftRepulsion{{k}}, {}};
   params.time_step.implicit_contacts = true;
   params.time_step.mode = TimeStepParams::Mode::fixed;
@@ -172,8 +172,8 @@ TEST(ImplicitContacts, VelocitiesBalanceTheEndOfStepContactForces) {
 TEST(ImplicitContacts, StressControlHitsTheTarget) {
   const Box box(10, 10, 10);
   SimulationParams params = frictional_lubricated(1.0e4);
-  params.control = FlowControl::stress;
-  params.shear_stress = 2.5;
+  params.flow.control = FlowControl::stress;
+  params.flow.shear_stress = 2.5;
   auto st = cluster();
   st.strain = 0.3;
   PairwiseSimulation sim(st, box, params);

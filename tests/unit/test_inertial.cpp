@@ -80,7 +80,7 @@ TEST(Inertial, SphereThrownAcrossTheShearedFaceRelaxesOntoTheLocalFlow) {
   s.verlet[1] = v0;
   s.verlet[5] = -0.5 * rate;
   SimulationParams params = inertial(st, 1e3, dt);
-  params.shear_rate = rate;
+  params.flow.shear_rate = rate;
   PairwiseSimulation sim(s, Box(10, 10, 10), params);
   for (int step = 0; step < 3000; ++step) sim.advance();
   sim.evaluate();

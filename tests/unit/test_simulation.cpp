@@ -32,7 +32,7 @@ TEST(Simulation, OverlappingPairSeparatesAtTheStokesVelocity) {
   const double overlap = 0.01;
   auto st = state_of({{10, 10, 10}, {10, 10, 12 - overlap}}, {1.0, 1.0});
   SimulationParams params;
-  params.shear_rate = 1.0;
+  params.flow.shear_rate = 1.0;
   PairwiseSimulation sim(st, box, params);
   sim.evaluate();
   const double f = std::get<ComposedLaw<SoftRepulsion>>(params.contact).contact.p.kn * overlap;  // along z, pushing 1 away from 0
@@ -54,7 +54,7 @@ TEST(Simulation, ParticleCrossingTheShearedFaceIsRemapped) {
   SimulationParams params;
   params.time_step.mode = TimeStepParams::Mode::fixed;
   params.time_step.fixed = 0.01;
-  params.shear_rate = 2.0;
+  params.flow.shear_rate = 2.0;
   PairwiseSimulation sim(st, box, params);
   sim.evaluate();
   const Vec3 r0 = sim.state().particles.position[0];

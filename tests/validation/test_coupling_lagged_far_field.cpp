@@ -118,7 +118,7 @@ TEST(LaggedFarField, SqueezedPairSeparatesAtTheExactRateOnLaggedSteps) {
   // force on every step, full (step 0) or lagged (1-7).
   const Box box(24, 24, 24);
   SimulationParams params;
-  params.shear_rate = 0.0;
+  params.flow.shear_rate = 0.0;
   params.time_step.mode = TimeStepParams::Mode::fixed;
   params.time_step.fixed = 2e-4;
   const double kn = std::get<ComposedLaw<SoftRepulsion>>(params.contact).contact.p.kn;
@@ -172,7 +172,7 @@ TEST(LaggedFarField, RestartBetweenFullSolvesRepeatsTheUninterruptedRun) {
 
 TEST(LaggedFarField, StressControlledRestartBetweenFullSolvesRepeatsTheUninterruptedRun) {
   SimulationParams params = cluster_params();
-  params.control = FlowControl::stress;
-  params.shear_stress = 2.0;
+  params.flow.control = FlowControl::stress;
+  params.flow.shear_stress = 2.0;
   expect_restart_repeats_the_uninterrupted_run(params);
 }

@@ -37,7 +37,7 @@ TEST(CouplingSimulation, OverlappingPairSeparatesAtTheExactRate) {
   const double overlap = 0.01;
   const auto st = state_of({{11, 12.2, 12.7}, {13 - overlap, 12.2, 12.7}}, {1.0, 1.0});
   SimulationParams params;
-  params.shear_rate = 0.0;
+  params.flow.shear_rate = 0.0;
   FcmSimulation sim(st, box, params, fcm_params());
   sim.evaluate();
   const double f = std::get<ComposedLaw<SoftRepulsion>>(params.contact).contact.p.kn * overlap;
@@ -155,8 +155,8 @@ TEST(CouplingSimulation, RestartFromACheckpointRepeatsTheUninterruptedRun) {
 TEST(CouplingSimulation, StressControlledRestartRepeatsTheUninterruptedRun) {
   SimulationParams params;
   params.time_step.max = 0.01;
-  params.control = FlowControl::stress;
-  params.shear_stress = 2.0;
+  params.flow.control = FlowControl::stress;
+  params.flow.shear_stress = 2.0;
   expect_restart_repeats_the_uninterrupted_run(params);
 }
 
@@ -170,7 +170,7 @@ TEST(CouplingSimulation, ImplicitContactsRelaxAnOverlapAsBackwardEulerWithTheExa
   const double x11a = 252.549849, x12a = -251.904583;
   const double lambda = 2.0 * k / (6.0 * pi * (x11a - x12a));
   SimulationParams params;
-  params.shear_rate = 0.0;
+  params.flow.shear_rate = 0.0;
   params.contact = ComposedLaw<SoftRepulsion>{SoftRepulsion{{k}}, {}};
   params.time_step.implicit_contacts = true;
   params.time_step.mode = TimeStepParams::Mode::fixed;
@@ -199,8 +199,8 @@ TEST(CouplingSimulation, StressControlHitsTheTargetAndEqualsTheRateControlledSte
       for (int k = 0; k < 3; ++k)
         pos.push_back(Vec3(1.5 + 2.9 * i + jitter(rng), 1.5 + 2.9 * j + jitter(rng), 1.5 + 2.05 * k + jitter(rng)));
   SimulationParams params;
-  params.control = FlowControl::stress;
-  params.shear_stress = 3.0;
+  params.flow.control = FlowControl::stress;
+  params.flow.shear_stress = 3.0;
   params.time_step.implicit_contacts = true;
   FcmParams f = fcm_params();
   f.krylov_tolerance = 1e-9;
@@ -213,8 +213,8 @@ TEST(CouplingSimulation, StressControlHitsTheTargetAndEqualsTheRateControlledSte
   EXPECT_NEAR(stress.stress().total()(0, 1), 3.0, 1e-9);
 
   SimulationState same = stress.state_with_contacts();
-  params.control = FlowControl::rate;
-  params.shear_rate = stress.shear_rate();
+  params.flow.control = FlowControl::rate;
+  params.flow.shear_rate = stress.shear_rate();
   FcmSimulation rate(same, box, params, f);
   rate.evaluate();
   std::cout << "stress control: rate " << stress.shear_rate() << ", Sigma_xy at that rate "
