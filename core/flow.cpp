@@ -13,6 +13,12 @@ namespace {
 constexpr double infinity = std::numeric_limits<double>::infinity();
 }
 
+// The first reversal strain not yet passed. A step ends exactly on a reversal strain (next_reversal), after which
+// it counts as passed: the tolerance absorbs the round-off of landing on it.
+std::vector<double>::const_iterator Flow::first_reversal_ahead(double accumulated_strain) const {
+  return std::upper_bound(reverse_at.begin(), reverse_at.end(), accumulated_strain * (1.0 + 1e-12));
+}
+
 void Flow::validate() const {
   if (!std::isfinite(shear_rate)) throw InputError("flow.shear_rate must be finite");
   if (control == FlowControl::stress && !std::isfinite(shear_stress))
@@ -30,10 +36,11 @@ void Flow::validate() const {
     if (steps_per_cycle < 8) throw InputError("flow.steps_per_cycle must be >= 8");
   }
   if (protocol == FlowProtocol::reversal) {
-    if (reverse_at.empty()) throw InputError("flow.reverse_at: give at least one strain for flow.type = reversal");
+    if (reverse_at.empty())
+      throw InputError("flow.reverse_at: missing; give the accumulated strain(s) at which to reverse");
     for (std::size_t k = 0; k < reverse_at.size(); ++k)
       if (!(reverse_at[k] > (k ? reverse_at[k - 1] : 0.0)) || !std::isfinite(reverse_at[k]))
-        throw InputError("flow.reverse_at must be finite, > 0 and increasing");
+        throw InputError("flow.reverse_at: the strains must increase (finite, > 0, in increasing order)");
   }
   if (!steady() && wave_amplitude != 0.0)
     throw InputError("flow.type = " + protocol_name(protocol) + " is a simple shear; it has no wave amplitude");
@@ -41,10 +48,7 @@ void Flow::validate() const {
 
 double Flow::direction(double accumulated_strain) const {
   if (protocol != FlowProtocol::reversal) return 1.0;
-  // A step ends exactly on a reversal strain (next_reversal), after which the new direction holds.
-  const auto passed = std::upper_bound(reverse_at.begin(), reverse_at.end(), accumulated_strain * (1.0 + 1e-12)) -
-                      reverse_at.begin();
-  return passed % 2 == 0 ? 1.0 : -1.0;
+  return (first_reversal_ahead(accumulated_strain) - reverse_at.begin()) % 2 == 0 ? 1.0 : -1.0;
 }
 
 double Flow::rate(double time, double accumulated_strain) const {
@@ -63,7 +67,7 @@ double Flow::max_time_step() const { return oscillatory() ? period() / steps_per
 
 double Flow::next_reversal(double accumulated_strain) const {
   if (protocol != FlowProtocol::reversal) return infinity;
-  const auto it = std::upper_bound(reverse_at.begin(), reverse_at.end(), accumulated_strain * (1.0 + 1e-12));
+  const auto it = first_reversal_ahead(accumulated_strain);
   return it == reverse_at.end() ? infinity : *it;
 }
 

@@ -53,6 +53,9 @@ struct Flow {
   double period() const;
   // The rate of a run's progress strain: signed for steady shear, |gammadot| for the other protocols.
   double progress_rate(double shear_rate) const;
+
+ private:
+  std::vector<double>::const_iterator first_reversal_ahead(double accumulated_strain) const;
 };
 
 std::string protocol_name(FlowProtocol p);

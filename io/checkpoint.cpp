@@ -16,51 +16,53 @@ namespace suspend::io {
 namespace {
 constexpr const char* format = "suspend-checkpoint-1";
 
+// 64-bit FNV-1a, fed byte ranges in a fixed order.
+struct Fnv1a {
+  std::uint64_t h = 1469598103934665603ull;
+  void operator()(const void* data, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t k = 0; k < n; ++k) h = (h ^ b[k]) * 1099511628211ull;
+  }
+  std::int64_t value() const { return static_cast<std::int64_t>(h); }
+};
+
 // FNV-1a over the root attributes (text, then the bytes of every number, in a fixed order): stored in a dataset,
 // which carries a Fletcher32 checksum like every dataset, so that a flipped bit in an attribute is found too.
 // `accumulated`: the checkpoint holds accumulated_strain (absent before it existed, where it equals the strain).
 std::int64_t attribute_checksum(const Checkpoint& c, bool accumulated = true) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto bytes = [&](const void* data, std::size_t n) {
-    const auto* b = static_cast<const unsigned char*>(data);
-    for (std::size_t k = 0; k < n; ++k) h = (h ^ b[k]) * 1099511628211ull;
-  };
-  for (const std::string* t : {&c.fingerprint, &c.rng}) bytes(t->data(), t->size());
+  Fnv1a h;
+  for (const std::string* t : {&c.fingerprint, &c.rng}) h(t->data(), t->size());
   const std::int64_t ints[] = {c.threads, c.state.step, c.clock.series_rows, c.clock.snapshots};
   const double reals[] = {c.state.time,           c.state.strain,          c.state.last_dt,
                           c.state.shear_rate,     c.clock.next_series,     c.clock.next_snapshot,
                           c.clock.next_checkpoint, c.clock.jam_window_time, c.clock.jam_window_strain};
-  bytes(ints, sizeof ints);
-  bytes(reals, sizeof reals);
-  if (accumulated) bytes(&c.state.accumulated_strain, sizeof c.state.accumulated_strain);
-  return static_cast<std::int64_t>(h);
+  h(ints, sizeof ints);
+  h(reals, sizeof reals);
+  if (accumulated) h(&c.state.accumulated_strain, sizeof c.state.accumulated_strain);
+  return h.value();
 }
 
 // FNV-1a of the decoded arrays: Fletcher32 guards each dataset's stored bytes, not the metadata that says how to
 // decode them (a flipped bit in a datatype message reads other numbers from intact bytes).
 std::int64_t content_checksum(const SimulationState& s) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto bytes = [&](const void* data, std::size_t n) {
-    const auto* b = static_cast<const unsigned char*>(data);
-    for (std::size_t k = 0; k < n; ++k) h = (h ^ b[k]) * 1099511628211ull;
-  };
+  Fnv1a h;
   const Particles& p = s.particles;
   for (const std::vector<Vec3>* v : {&p.position, &p.velocity, &p.angular_velocity})
-    for (const Vec3& x : *v) bytes(x.data(), 3 * sizeof(double));
-  bytes(p.radius.data(), p.radius.size() * sizeof(double));
+    for (const Vec3& x : *v) h(x.data(), 3 * sizeof(double));
+  h(p.radius.data(), p.radius.size() * sizeof(double));
   for (int k : p.species) {
     const std::int64_t w = k;
-    bytes(&w, sizeof w);
+    h(&w, sizeof w);
   }
-  bytes(s.warm_start.data(), s.warm_start.size() * sizeof(double));
-  bytes(s.verlet.data(), s.verlet.size() * sizeof(double));
+  h(s.warm_start.data(), s.warm_start.size() * sizeof(double));
+  h(s.verlet.data(), s.verlet.size() * sizeof(double));
   for (const ContactHistory::Entry& e : s.contacts) {
     const std::int64_t ij[2] = {e.i, e.j};
-    bytes(ij, sizeof ij);
-    bytes(e.history.tangential_stretch.data(), 3 * sizeof(double));
-    bytes(e.history.rolling_stretch.data(), 3 * sizeof(double));
+    h(ij, sizeof ij);
+    h(e.history.tangential_stretch.data(), 3 * sizeof(double));
+    h(e.history.rolling_stretch.data(), 3 * sizeof(double));
   }
-  return static_cast<std::int64_t>(h);
+  return h.value();
 }
 
 std::vector<double> flatten(const std::vector<Vec3>& v) {

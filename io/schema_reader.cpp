@@ -73,9 +73,7 @@ YAML::Node SchemaReader::scalar(const std::string& key) {
   return v;
 }
 
-std::optional<double> SchemaReader::optional_number(const std::string& key, Range range) {
-  if (!has(key)) return std::nullopt;
-  const YAML::Node v = scalar(key);
+double SchemaReader::number_in(const YAML::Node& v, const std::string& key, Range range) const {
   double x = 0.0;
   try {
     x = v.as<double>();
@@ -84,6 +82,11 @@ std::optional<double> SchemaReader::optional_number(const std::string& key, Rang
   }
   if (!range.contains(x)) fail(key, exact(x) + " is out of range: must be " + range.describe());
   return x;
+}
+
+std::optional<double> SchemaReader::optional_number(const std::string& key, Range range) {
+  if (!has(key)) return std::nullopt;
+  return number_in(scalar(key), key, range);
 }
 
 double SchemaReader::number(const std::string& key, double fallback, Range range) {
@@ -104,14 +107,7 @@ std::vector<double> SchemaReader::number_list(const std::string& key, Range rang
   for (std::size_t k = 0; k < v.size(); ++k) {
     const std::string item = key + "[" + std::to_string(k) + "]";
     if (!v[k].IsScalar()) fail(item, "expected a number");
-    double x = 0.0;
-    try {
-      x = v[k].as<double>();
-    } catch (const YAML::Exception&) {
-      fail(item, "'" + v[k].Scalar() + "' is not a number (expected " + range.describe() + ")");
-    }
-    if (!range.contains(x)) fail(item, exact(x) + " is out of range: must be " + range.describe());
-    out.push_back(x);
+    out.push_back(number_in(v[k], item, range));
   }
   return out;
 }

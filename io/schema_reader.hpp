@@ -62,6 +62,8 @@ class SchemaReader {
 
  private:
   YAML::Node scalar(const std::string& key);
+  // The scalar v as a number in range; InputError naming `key` otherwise.
+  double number_in(const YAML::Node& v, const std::string& key, Range range) const;
   YAML::Node node_;
   std::string path_;
   std::set<std::string> asked_;

@@ -77,8 +77,9 @@ nlohmann::json microstructure(hid_t f, double from, const char* strain_attribute
 nlohmann::json optional_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 
 // eta', eta'' of the total stress and of each contribution, the amplitudes and the response's harmonics.
-nlohmann::json oscillation(hid_t f, const SummaryContext& ctx, double from_time, double* rate_amplitude) {
-  const std::vector<double> t = read_series(f, "time"), rate = read_series(f, "shear_rate");
+// t, rate: the series' time and shear_rate columns.
+nlohmann::json oscillation(hid_t f, const SummaryContext& ctx, const std::vector<double>& t,
+                           const std::vector<double>& rate, double from_time, double* rate_amplitude) {
   const double omega = ctx.flow.angular_frequency;
   const bool stress_control = ctx.flow.control == FlowControl::stress;
   auto of = [&](const std::string& series) {
@@ -113,8 +114,9 @@ nlohmann::json oscillation(hid_t f, const SummaryContext& ctx, double from_time,
 
 // Each reversal's transient: the viscosity Sigma_xy / gammadot over the last strain unit before it, its minimum
 // after it and where, and its mean over the last strain unit before the next reversal or the end.
-nlohmann::json reversals(hid_t f, const SummaryContext& ctx) {
-  const std::vector<double> strain = read_series(f, "accumulated_strain"), rate = read_series(f, "shear_rate");
+// strain, rate: the series' accumulated_strain and shear_rate columns.
+nlohmann::json reversals(hid_t f, const SummaryContext& ctx, const std::vector<double>& strain,
+                         const std::vector<double>& rate) {
   const std::vector<double> sxy = read_series(f, "stress/total", 3);
   nlohmann::json out = nlohmann::json::array();
   const std::vector<double>& at = ctx.flow.reverse_at;
@@ -160,7 +162,7 @@ nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
   if (ctx.flow.oscillatory()) {
     const std::vector<double> t = read_series(f, "time");
     const double from_time = window.empty() ? (t.empty() ? 0.0 : t.back()) : t[window.front()];
-    oscillatory = oscillation(f, ctx, from_time, &rate_amplitude.mean);
+    oscillatory = oscillation(f, ctx, t, rate, from_time, &rate_amplitude.mean);
     by_mean = &rate_amplitude;  // N1, N2, Pi over the rate amplitude; eta_r below is eta'
   }
   j["note"] = ctx.flow.oscillatory()
@@ -184,7 +186,7 @@ nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
       j["contributions"][std::string(name)]["eta_r"] = oscillatory["contributions"][std::string(name)]["eta_prime"];
     j["oscillatory"] = oscillatory;
   }
-  if (ctx.flow.protocol == FlowProtocol::reversal) j["reversals"] = reversals(f, ctx);
+  if (ctx.flow.protocol == FlowProtocol::reversal) j["reversals"] = reversals(f, ctx, strain, rate);
   std::vector<double> contacts = read_series(f, "contacts"), overlap = read_series(f, "max_overlap");
   std::vector<double> wc, wo;
   for (std::size_t r : window) wc.push_back(contacts[r]), wo.push_back(overlap[r]);
