@@ -1,0 +1,47 @@
+#!/usr/bin/env python3
+"""Restores the finished points of a campaign folder from a campaign table (campaign.json), so that a sweep whose
+raw runs were lost (a new machine, a cleaned scratch disk) continues with the points it had not finished instead of
+running all of them again. Each done or jammed point gets its point.json (status, message, wall time) and its
+summary.json back, which is all `suspend sweep` reads of a finished point; the table the sweep then writes holds the
+same rows. Snapshots and series of the restored points are not recovered (the table never held them).
+
+usage: tools/restore_campaign.py TABLE.json OUT_DIR     (then: suspend sweep CAMPAIGN.yaml --out OUT_DIR)
+"""
+import json
+import os
+import sys
+
+
+def write_atomically(path, text):
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, path)
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__.strip().splitlines()[-1].strip())
+    table, out = sys.argv[1], sys.argv[2]
+    with open(table) as f:
+        points = json.load(f)["points"]
+    restored = kept = 0
+    for p in points:
+        if p["status"] not in ("done", "jammed") or p.get("summary") is None:
+            continue
+        folder = os.path.join(out, "points", p["name"])
+        if os.path.exists(os.path.join(folder, "point.json")):
+            kept += 1  # the folder's own record wins over the table's
+            continue
+        os.makedirs(folder, exist_ok=True)
+        write_atomically(os.path.join(folder, "summary.json"), json.dumps(p["summary"], indent=2) + "\n")
+        record = {"status": p["status"], "exit_code": 0 if p["status"] == "done" else 4,  # core/error.hpp exit_jammed
+                  "message": p.get("message", ""), "wall_seconds": p["wall_seconds"], "runs": 1}
+        write_atomically(os.path.join(folder, "point.json"), json.dumps(record, indent=2) + "\n")
+        restored += 1
+    print(f"{restored} finished point(s) restored into {out}, {kept} already there; "
+          f"{len(points) - restored - kept} left for the sweep")
+
+
+if __name__ == "__main__":
+    main()
