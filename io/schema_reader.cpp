@@ -26,33 +26,6 @@ std::string suggestion(const std::string& guess) {
 }
 }  // namespace
 
-std::string exact(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  // Prefer the shortest representation that round-trips.
-  for (int prec = 1; prec <= 17; ++prec) {
-    char shorter[64];
-    std::snprintf(shorter, sizeof shorter, "%.*g", prec, v);
-    if (std::strtod(shorter, nullptr) == v) return shorter;
-  }
-  return buf;
-}
-
-bool Range::contains(double v) const {
-  if (!std::isfinite(v)) return false;
-  const bool above = lo_open ? v > lo : v >= lo;
-  const bool below = hi_open ? v < hi : v <= hi;
-  return above && below;
-}
-
-std::string Range::describe() const {
-  const bool lo_inf = std::isinf(lo), hi_inf = std::isinf(hi);
-  if (lo_inf && hi_inf) return "a finite number";
-  if (hi_inf) return std::string(lo_open ? "> " : ">= ") + exact(lo);
-  if (lo_inf) return std::string(hi_open ? "< " : "<= ") + exact(hi);
-  return std::string("in ") + (lo_open ? "(" : "[") + exact(lo) + ", " + exact(hi) + (hi_open ? ")" : "]");
-}
-
 SchemaReader::SchemaReader(YAML::Node node, std::string path) : node_(std::move(node)), path_(std::move(path)) {
   if (node_ && !node_.IsNull() && !node_.IsMap())
     throw InputError((path_.empty() ? std::string("case") : path_) + ": expected a mapping of keys to values");

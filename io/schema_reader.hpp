@@ -11,28 +11,16 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/range.hpp"
 
 namespace suspend::io {
-
-// An allowed interval for a number; open or closed at each end.
-struct Range {
-  double lo = -std::numeric_limits<double>::infinity();
-  double hi = std::numeric_limits<double>::infinity();
-  bool lo_open = false, hi_open = false;
-  static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
-  static Range non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false, false}; }
-  static Range closed(double a, double b) { return {a, b, false, false}; }
-  static Range open_closed(double a, double b) { return {a, b, true, false}; }
-  static Range open(double a, double b) { return {a, b, true, true}; }
-  bool contains(double v) const;
-  std::string describe() const;
-};
 
 class SchemaReader {
  public:
   SchemaReader(YAML::Node node, std::string path);
 
   const std::string& path() const { return path_; }
+  const YAML::Node& node() const { return node_; }  // the mapping read (to merge it with another)
   std::string key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
   bool has(const std::string& key);
 
@@ -84,8 +72,6 @@ void apply_override(YAML::Node& root, const std::string& assignment);
 // The closest word to `word` among `candidates` (edit distance), or "" if none is close.
 std::string closest_word(const std::string& word, const std::vector<std::string>& candidates);
 
-// A double printed so that it reads back to the same bits.
-std::string exact(double v);
 // The same as a YAML scalar (0.1, not 0.10000000000000001), still read back as a number.
 inline YAML::Node number_node(double v) { return YAML::Node(exact(v)); }
 
