@@ -60,7 +60,7 @@ struct ContactStiffness {
 void compact_active_pairs(const std::vector<NeighbourPair>& list, const Particles& p, const Box& box,
                           double interaction_gap, std::vector<ActivePair>& active);
 
-// Evaluates law(geometry, motion, dt, history[k]) -> PairForce on every active pair and accumulates into sums;
+// Evaluates law(species_i, species_j, geometry, motion, dt, history[k]) -> PairForce on every active pair and accumulates into sums;
 // the force on j of each pair goes to pair_force[k] (snapshots). velocity/omega are the particle velocities the
 // contact laws see (the last step's); the image of j moves at u_j - y_images gammadot L_y x (Lees-Edwards).
 // `local` is per-thread scratch kept by the caller so that steps do not allocate. If `stiffness` is given, it gets
@@ -128,7 +128,7 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
       const ActivePair& pr = active[k];
       const RelativeMotion m{p.velocity[pr.i], p.velocity[pr.j] - Vec3(pr.y_images * image_velocity, 0.0, 0.0),
                              p.angular_velocity[pr.i], p.angular_velocity[pr.j]};
-      const PairForce f = law(pr.geometry, m, dt, history[k]);
+      const PairForce f = law(p.species[pr.i], p.species[pr.j], pr.geometry, m, dt, history[k]);
       const Vec3 fj = f.total_on_j();
       pair_force[k] = fj;
       if (pair_stiffness) pair_stiffness[k] = {f.normal_stiffness, f.tangential_stiffness};

@@ -50,7 +50,7 @@ struct SimulationParams {
   Flow flow;  // control, protocol and shape of the imposed flow (core/flow.hpp)
   Integrator integrator = Integrator::overdamped;
   double stokes_number = 1.0e-3;            // inertial: St = rho a_1^2 gammadot_ref / eta_0 (the density in code units)
-  ContactLaw contact = ComposedLaw<SoftRepulsion>{};
+  ContactLaw contact = ComposedLaw<ContactModel<SoftRepulsion>>{};
   bool lubrication = false;           // pairwise lubrication and the resistance solve, else Stokes drag alone
   ResistanceSolverParams resistance;  // lubrication cutoffs and the linear solver
   TimeStepParams time_step;

@@ -235,7 +235,7 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     v.finish();
     h.finish();
   }
-  c.simulation.contact = read_contact(top.child("contact"));
+  c.simulation.contact = read_contact(top.child("contact"), static_cast<int>(c.particles.species.size()));
   if (sigma_star) {
     // paper 004 eq. 20: sigma* = 6 pi Sigma_12 a_1^2 / F_adh
     const double f_adh = adhesion_force(c.simulation.contact);

@@ -1,26 +1,40 @@
 #include "io/contact_case.hpp"
 
 #include <cmath>
-#include <numbers>
-
-#include "io/units.hpp"
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
 
 namespace suspend::io {
 
 namespace {
 using std::numbers::pi;
 
-LinearSpringParams read_spring(SchemaReader& r) {
-  LinearSpringParams p;
-  p.kn = stiffness_from_k_hat(r.number("k_hat", p.kn, Range::positive()));
-  p.kt = r.number("kt", 2.0 / 7.0 * p.kn, Range::positive());
-  p.gamma_n = r.number("gamma_n", 0.0, Range::non_negative());
-  return p;
+// The laws write themselves through this: numbers as exact YAML scalars.
+struct YamlWriter {
+  YAML::Node& n;
+  void number(std::string_view key, double v) { n[std::string(key)] = number_node(v); }
+  void text(std::string_view key, std::string_view v) { n[std::string(key)] = std::string(v); }
+};
+
+template <class... T>
+std::vector<std::string> names(TypeList<T...>) {
+  return {std::string(T::name)...};
+}
+template <class... T, class Fn>
+void for_each_type(TypeList<T...>, Fn&& fn) {
+  (fn.template operator()<T>(), ...);
 }
 
-template <class Contact>
-ContactLaw compose(Contact c, SurfaceForces s) {
-  return ComposedLaw<Contact>{std::move(c), std::move(s)};
+template <class Normal, class Friction>
+ContactLaw with_rolling(SchemaReader& r, const Normal& normal, const Friction& friction, const SurfaceForces& s) {
+  if (!r.has("rolling")) return ComposedLaw<ContactModel<Normal, Friction>>{{normal, friction, {}}, s};
+  SchemaReader rr = r.child("rolling");
+  const RollingResistance rolling = RollingResistance::read(rr, normal.secant_stiffness() / 100.0);
+  rr.finish();
+  return ComposedLaw<ContactModel<Normal, Friction, RollingResistance>>{{normal, friction, rolling}, s};
 }
 
 SurfaceForces read_surface_forces(SchemaReader& r) {
@@ -46,69 +60,89 @@ SurfaceForces read_surface_forces(SchemaReader& r) {
   return s;
 }
 
+// One law from the keys of r: {law, its keys, friction, mu or mu_s, critical_load, rolling, surface forces}.
+// Coulomb friction with mu = 0 is no friction.
+ContactLaw read_law(SchemaReader& r) {
+  const std::string law = r.choice("law", "soft_repulsion", names(NormalLaws{}));
+  const SurfaceForces surface = read_surface_forces(r);
+  std::optional<ContactLaw> out;
+  for_each_type(NormalLaws{}, [&]<class N>() {
+    if (N::name != law) return;
+    const std::string friction = r.choice("friction", std::string(N::default_friction), names(FrictionLaws{}));
+    const N normal = N::read(r, friction != NoFriction::name);
+    for_each_type(FrictionLaws{}, [&]<class F>() {
+      if (F::name != friction) return;
+      const F f = F::read(r, N::friction_key, N::default_mu);
+      if constexpr (std::is_same_v<F, CoulombFriction>) {
+        if (f.coefficient() == 0.0) {
+          out = with_rolling(r, normal, NoFriction{}, surface);
+          return;
+        }
+      }
+      out = with_rolling(r, normal, f, surface);
+    });
+  });
+  return *out;
+}
+
+// species_pairs: [{species: [i, j], keys of the law to change}, ...]: each entry is read as the case's contact
+// with its keys replaced, and must give the same law, friction and rolling.
+void read_species_pairs(SchemaReader& r, int species, ContactLaw& law) {
+  for (SchemaReader e : r.children("species_pairs")) {
+    const std::vector<double> s = e.number_list("species", Range::closed(0.0, species - 1.0));
+    if (s.size() != 2 || s[0] != std::floor(s[0]) || s[1] != std::floor(s[1]))
+      e.fail("species", "give two species indices [i, j], each an integer in [0, " + std::to_string(species - 1) +
+                            "] (the order of particles.species)");
+    for (const char* key : {"law", "repulsion", "attraction", "species_pairs"})
+      if (e.has(key))
+        e.fail(key, "a species pair takes the case's law and surface forces; give only the parameters that differ");
+    YAML::Node merged = YAML::Clone(r.node());
+    merged.remove("species_pairs");
+    for (const auto& kv : e.node())
+      if (kv.first.Scalar() != "species") merged[kv.first.Scalar()] = YAML::Clone(kv.second);
+    SchemaReader m(merged, e.path());
+    const ContactLaw pair = read_law(m);
+    m.finish();
+    if (pair.index() != law.index())
+      e.fail("friction", "a species pair may change the parameters of the case's law, friction and rolling, not "
+                         "which friction law or whether rolling acts");
+    std::visit(
+        [&](auto& l) {
+          using L = std::decay_t<decltype(l)>;
+          l.set_pair(static_cast<int>(s[0]), static_cast<int>(s[1]), std::get<L>(pair).contact, species);
+        },
+        law);
+  }
+}
+
+// The keys of one contact model (no law name, no surface forces).
+template <class Model>
+void write_model(YAML::Node& n, const Model& c) {
+  using N = typename Model::normal_type;
+  YamlWriter w{n};
+  c.normal.write(w, Model::has_friction);
+  // A law whose default is no friction writes none when it has none (soft_repulsion: {law, k_hat}).
+  if (Model::has_friction || N::default_friction != NoFriction::name) c.friction.write(w, N::friction_key);
+  if constexpr (Model::has_rolling) {
+    YAML::Node rolling;
+    YamlWriter rw{rolling};
+    c.rolling.write(rw);
+    n["rolling"] = rolling;
+  }
+}
+
 }  // namespace
 
-ContactLaw read_contact(SchemaReader r) {
-  const std::string law = r.choice("law", "soft_repulsion", {"soft_repulsion", "linear_spring", "hertz_adhesive"});
-  const SurfaceForces surface = read_surface_forces(r);
-  ContactLaw out;
-  if (law == "soft_repulsion") {
-    SoftRepulsion s;
-    s.p.kn = stiffness_from_k_hat(r.number("k_hat", 1.0e4, Range::positive()));
-    out = compose(s, surface);
-  } else if (law == "linear_spring") {
-    const LinearSpringParams spring = read_spring(r);
-    const std::string friction = r.choice("friction", "coulomb", {"none", "coulomb", "critical_load"});
-    const double mu = r.number("mu", friction == "none" ? 0.0 : 1.0, Range::non_negative());
-    std::optional<RollingResistanceParams> rolling;
-    if (r.has("rolling")) {
-      SchemaReader rr = r.child("rolling");
-      RollingResistanceParams p;
-      p.kr = rr.number("kr", spring.kn / 100.0, Range::positive());
-      p.mu_r = rr.number("mu_r", p.mu_r, Range::non_negative());
-      rr.finish();
-      rolling = p;
-    }
-    if (friction == "critical_load") {
-      CriticalLoadFriction f{{mu, r.number("critical_load", 1.0, Range::non_negative())}};
-      if (rolling)
-        out = compose(LinearSpringCriticalLoadRolling{spring, f, RollingResistance{*rolling}}, surface);
-      else
-        out = compose(LinearSpringCriticalLoad{spring, f, {}}, surface);
-    } else {
-      if (friction == "none" && mu != 0.0) r.fail("mu", "must be 0 with friction: none");
-      CoulombFriction f{{mu}};
-      if (rolling)
-        out = compose(LinearSpringCoulombRolling{spring, f, RollingResistance{*rolling}}, surface);
-      else
-        out = compose(LinearSpringCoulomb{spring, f, {}}, surface);
-    }
-  } else {
-    // Paper 004: Gamma-bar = 6 pi eta a_1^2 gammadot / (k_n (eps_bar h_r)^(3/2)) (eq. 17), G_adh = F_adh / (6 pi).
-    const double roughness = r.number("roughness", 5.0e-3, Range::positive());
-    const double eps_bar = r.number("eps_bar", 5.0e-2, Range::positive());
-    const double gamma_bar = r.number("gamma_bar", 1.0, Range::positive());
-    const double g_adh = r.number("g_adh", 0.9, Range::non_negative());
-    const double mu_s = r.number("mu_s", 0.5, Range::non_negative());
-    HertzAdhesiveParams p = hertz_adhesive_from_groups(gamma_bar, g_adh, eps_bar, roughness, mu_s);
-    p.repulsion_onset = r.number("repulsion_onset", p.repulsion_onset, Range::closed(0.0, 1.0));
-    p.repulsion_stiffness = r.number("repulsion_stiffness", p.repulsion_stiffness, Range::non_negative());
-    out = compose(HertzAdhesive(p), surface);
-  }
+ContactLaw read_contact(SchemaReader r, int species) {
+  ContactLaw law = read_law(r);
+  if (r.has("species_pairs")) read_species_pairs(r, species, law);
   r.finish();
-  std::visit([](const auto& l) { l.validate(); }, out);
-  return out;
+  validate(law);
+  return law;
 }
 
 std::string contact_law_name(const ContactLaw& law) {
-  return std::visit(
-      [](const auto& l) -> std::string {
-        using C = std::decay_t<decltype(l.contact)>;
-        if constexpr (std::is_same_v<C, SoftRepulsion>) return "soft_repulsion";
-        else if constexpr (std::is_same_v<C, HertzAdhesive>) return "hertz_adhesive";
-        else return "linear_spring";
-      },
-      law);
+  return std::visit([](const auto& l) { return std::string(std::decay_t<decltype(l.contact.normal)>::name); }, law);
 }
 
 YAML::Node contact_to_yaml(const ContactLaw& law) {
@@ -116,35 +150,7 @@ YAML::Node contact_to_yaml(const ContactLaw& law) {
   n["law"] = contact_law_name(law);
   std::visit(
       [&](const auto& l) {
-        using C = std::decay_t<decltype(l.contact)>;
-        const auto& c = l.contact;
-        if constexpr (std::is_same_v<C, SoftRepulsion>) {
-          n["k_hat"] = number_node(k_hat_from_stiffness(c.p.kn));
-        } else if constexpr (std::is_same_v<C, HertzAdhesive>) {
-          const HertzAdhesiveParams& p = c.params();
-          n["roughness"] = number_node(p.roughness);
-          n["eps_bar"] = number_node(p.eps_bar);
-          n["gamma_bar"] = number_node(6.0 * pi / (p.kn * std::pow(p.eps_bar * p.roughness, 1.5)));
-          n["g_adh"] = number_node(p.f_adh / (6.0 * pi));
-          n["mu_s"] = number_node(p.mu_s);
-          n["repulsion_onset"] = number_node(p.repulsion_onset);
-          n["repulsion_stiffness"] = number_node(p.repulsion_stiffness);
-        } else {
-          n["k_hat"] = number_node(k_hat_from_stiffness(c.p.kn));
-          n["kt"] = number_node(c.p.kt);
-          n["gamma_n"] = number_node(c.p.gamma_n);
-          if constexpr (requires { c.friction.p.critical_load; }) {
-            n["friction"] = "critical_load";
-            n["critical_load"] = number_node(c.friction.p.critical_load);
-          } else {
-            n["friction"] = c.friction.p.mu == 0.0 ? "none" : "coulomb";
-          }
-          n["mu"] = number_node(c.friction.p.mu);
-          if constexpr (requires { c.rolling.p.kr; }) {
-            n["rolling"]["kr"] = number_node(c.rolling.p.kr);
-            n["rolling"]["mu_r"] = number_node(c.rolling.p.mu_r);
-          }
-        }
+        write_model(n, l.contact);
         if (l.surface.repulsion) {
           const auto& p = l.surface.repulsion->p;
           n["repulsion"]["force"] = number_node(p.force);
@@ -156,6 +162,14 @@ YAML::Node contact_to_yaml(const ContactLaw& law) {
           n["attraction"]["hamaker"] = number_node(p.hamaker);
           n["attraction"]["epsilon"] = number_node(p.epsilon_rel);
           n["attraction"]["cutoff"] = number_node(p.cutoff);
+        }
+        for (const auto& [s_i, s_j] : l.pairs.given) {
+          YAML::Node e;
+          e["species"].push_back(s_i);
+          e["species"].push_back(s_j);
+          e["species"].SetStyle(YAML::EmitterStyle::Flow);
+          write_model(e, l.pairs.of(s_i, s_j));
+          n["species_pairs"].push_back(e);
         }
       },
       law);

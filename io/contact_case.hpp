@@ -8,7 +8,8 @@
 
 namespace suspend::io {
 
-ContactLaw read_contact(SchemaReader r);
+// species: how many species the case has (particles.species), for contact.species_pairs.
+ContactLaw read_contact(SchemaReader r, int species);
 YAML::Node contact_to_yaml(const ContactLaw& law);
 std::string contact_law_name(const ContactLaw& law);
 

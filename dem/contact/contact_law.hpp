@@ -1,58 +1,137 @@
-// The contact model of a run: one contact law composed with optional surface forces, chosen at set-up.
+// The contact model of a run: a composed contact model (contact_model.hpp) plus optional surface forces, chosen at
+// set-up from the registered sub-models below.
 //
-//   ContactLaw = std::variant<ComposedLaw<SoftRepulsion>, ComposedLaw<LinearSpring...>, ComposedLaw<HertzAdhesive>>
+//   ContactLaw = std::variant<ComposedLaw<ContactModel<N, F, R>>...> over every normal law N, friction F, rolling R
 // Every alternative has the same call shape, PairForce law(geometry, motion, dt, history), returns forces ON j by
 // contribution and torques on i and j (pair_geometry.hpp), and updates the pair history in place (in_contact false
 // when the pair carries no history any more). A driver visits the variant once per step (with_law or
 // evaluate_pairs) and loops over pairs inside, so the inner loop calls the concrete law directly: no virtual call,
 // no per-pair dispatch (STYLE.md habit 6).
+//
+// A new law: its file (a struct with name, documentation, parameters, apply, energy, read and write, as
+// hertz_adhesive.hpp), one line in NormalLaws or FrictionLaws below, and its test. The case reader and writer
+// (io/contact_case.cpp) and every driver follow from the lists.
 #pragma once
 #include <algorithm>
-#include <cmath>
-#include <type_traits>
+#include <array>
 #include <cstddef>
 #include <utility>
 #include <variant>
+#include <vector>
 
-#include "dem/contact/hertz_adhesive.hpp"
-#include "dem/contact/linear_spring_dashpot.hpp"
+#include "dem/contact/contact_model.hpp"
 #include "dem/contact/pair_geometry.hpp"
 #include "dem/contact/pair_history.hpp"
-#include "dem/contact/soft_repulsion.hpp"
 #include "dem/contact/surface_forces.hpp"
 
 namespace suspend {
 
+template <class... T>
+struct TypeList {};
+
+// The registered sub-models: one line each.
+using NormalLaws = TypeList<SoftRepulsion, LinearSpringDashpot, HertzAdhesive>;
+using FrictionLaws = TypeList<NoFriction, CoulombFriction, CriticalLoadFriction>;
+using RollingLaws = TypeList<NoRolling, RollingResistance>;
+
+// Contact parameters that differ per pair of species (a symmetric species x species table), empty when every pair
+// takes the law's own. Same law, friction and rolling for every pair; only their parameters differ.
+template <class Contact>
+struct SpeciesPairTable {
+  int species = 0;
+  std::vector<Contact> table;                 // table[s_i * species + s_j]
+  std::vector<std::array<int, 2>> given;      // the pairs a case set, in its order (to write it back)
+  bool empty() const { return table.empty(); }
+  const Contact& of(int s_i, int s_j) const { return table[static_cast<std::size_t>(s_i * species + s_j)]; }
+};
+
 template <class Contact>
 struct ComposedLaw {
-  Contact contact;
+  Contact contact;  // every species pair without its own parameters
   SurfaceForces surface;
+  SpeciesPairTable<Contact> pairs;
+
+  // Gives the species pair (s_i, s_j) its own parameters; the others keep `contact`.
+  void set_pair(int s_i, int s_j, const Contact& c, int species) {
+    if (pairs.empty()) {
+      pairs.species = species;
+      pairs.table.assign(static_cast<std::size_t>(species * species), contact);
+    }
+    pairs.table[static_cast<std::size_t>(s_i * species + s_j)] = c;
+    pairs.table[static_cast<std::size_t>(s_j * species + s_i)] = c;
+    pairs.given.push_back({s_i, s_j});
+  }
+  const Contact& contact_of(int s_i, int s_j) const { return pairs.empty() ? contact : pairs.of(s_i, s_j); }
 
   void validate() const {
     contact.validate();
+    for (const Contact& c : pairs.table) c.validate();
     surface.validate();
   }
+  // Largest gap at which the contact law of any species pair acts.
+  double contact_range() const {
+    double r = contact.range();
+    for (const Contact& c : pairs.table) r = std::max(r, c.range());
+    return r;
+  }
   // Largest surface gap at which the pair interacts: the neighbour list must reach at least this far.
-  double range() const { return std::max(contact.range(), surface.range()); }
+  double range() const { return std::max(contact_range(), surface.range()); }
+  double stiffness_scale() const {
+    double k = contact.normal.stiffness_scale();
+    for (const Contact& c : pairs.table) k = std::max(k, c.normal.stiffness_scale());
+    return k;
+  }
 
-  PairForce operator()(const PairGeometry& g, const RelativeMotion& m, double dt, PairHistory& h) const {
-    PairForce f;
-    if constexpr (requires { contact(g, m, dt, h); }) {
-      f = contact(g, m, dt, h);
-    } else {  // history-free contact laws
-      f = contact(g);
-      h.reset();
-    }
+  // A pair of species s_i, s_j (the pair drivers' call).
+  PairForce operator()(int s_i, int s_j, const PairGeometry& g, const RelativeMotion& m, double dt,
+                       PairHistory& h) const {
+    PairForce f = contact_of(s_i, s_j)(g, m, dt, h);
     surface.add_to(g, f);
     return f;
+  }
+  // A pair of species 0 (or of a law without a species table).
+  PairForce operator()(const PairGeometry& g, const RelativeMotion& m, double dt, PairHistory& h) const {
+    return (*this)(0, 0, g, m, dt, h);
   }
   double energy(const PairGeometry& g) const { return contact.energy(g) + surface.energy(g); }
 };
 
-using ContactLaw =
-    std::variant<ComposedLaw<SoftRepulsion>, ComposedLaw<LinearSpringCoulomb>, ComposedLaw<LinearSpringCoulombRolling>,
-                 ComposedLaw<LinearSpringCriticalLoad>, ComposedLaw<LinearSpringCriticalLoadRolling>,
-                 ComposedLaw<HertzAdhesive>>;
+namespace detail {
+template <class... Lists>
+struct Concat {
+  using type = TypeList<>;
+};
+template <class... A>
+struct Concat<TypeList<A...>> {
+  using type = TypeList<A...>;
+};
+template <class... A, class... B, class... Rest>
+struct Concat<TypeList<A...>, TypeList<B...>, Rest...> : Concat<TypeList<A..., B...>, Rest...> {};
+
+template <class N, class F, class Rs>
+struct WithRolling;
+template <class N, class F, class... R>
+struct WithRolling<N, F, TypeList<R...>> {
+  using type = TypeList<ComposedLaw<ContactModel<N, F, R>>...>;
+};
+template <class N, class Fs, class Rs>
+struct WithFriction;
+template <class N, class... F, class Rs>
+struct WithFriction<N, TypeList<F...>, Rs> : Concat<typename WithRolling<N, F, Rs>::type...> {};
+template <class Ns, class Fs, class Rs>
+struct Product;
+template <class... N, class Fs, class Rs>
+struct Product<TypeList<N...>, Fs, Rs> : Concat<typename WithFriction<N, Fs, Rs>::type...> {};
+
+template <class L>
+struct AsVariant;
+template <class... T>
+struct AsVariant<TypeList<T...>> {
+  using type = std::variant<T...>;
+};
+}  // namespace detail
+
+using ContactLaw = detail::AsVariant<detail::Product<NormalLaws, FrictionLaws, RollingLaws>::type>::type;
 
 inline void validate(const ContactLaw& law) {
   std::visit([](const auto& l) { l.validate(); }, law);
@@ -62,19 +141,9 @@ inline double interaction_range(const ContactLaw& law) {
 }
 
 // A linear stiffness scale of the law (eta_0 gammadot a_1): the explicit time step must resolve 6 pi eta a / k.
-// Hertz: dF/d delta = (3/2) k_n sqrt(delta) at the largest compression h_r, stiffened by the supplementary wall.
+// With a species-pair table: the stiffest pair's.
 inline double stiffness_scale(const ContactLaw& law) {
-  return std::visit(
-      [](const auto& l) -> double {
-        const auto& c = l.contact;
-        if constexpr (std::is_same_v<std::decay_t<decltype(c)>, HertzAdhesive>) {
-          const HertzAdhesiveParams& p = c.params();
-          return 1.5 * p.kn * std::sqrt(p.roughness) * (1.0 + p.repulsion_stiffness * std::sqrt(p.repulsion_onset));
-        } else {
-          return c.p.kn;
-        }
-      },
-      law);
+  return std::visit([](const auto& l) { return l.stiffness_scale(); }, law);
 }
 
 // Calls fn(concrete_law) once: a driver templated on the law writes its pair loop inside fn.
@@ -102,17 +171,11 @@ void evaluate_pairs(const ContactLaw& law, std::size_t begin, std::size_t end, d
       law);
 }
 
-// The constant adhesion force F_adh of the Hertz-adhesive law (paper 004 eq. 16), 0 for laws without adhesion:
-// it sets the stress scale sigma* = 6 pi Sigma_xy a_1^2 / F_adh and G_adh = F_adh / (6 pi eta a_1^2 gammadot).
+// The constant adhesion force F_adh of the normal law (paper 004 eq. 16), 0 for laws without adhesion: it sets the
+// stress scale sigma* = 6 pi Sigma_xy a_1^2 / F_adh and G_adh = F_adh / (6 pi eta a_1^2 gammadot). With a
+// species-pair table, the law's own F_adh (the paper's scale is that of the a_1 spheres, species 0).
 inline double adhesion_force(const ContactLaw& law) {
-  return std::visit(
-      [](const auto& l) -> double {
-        if constexpr (std::is_same_v<std::decay_t<decltype(l.contact)>, HertzAdhesive>)
-          return l.contact.pull_off_force();
-        else
-          return 0.0;
-      },
-      law);
+  return std::visit([](const auto& l) { return l.contact.normal.adhesion_force(); }, law);
 }
 
 }  // namespace suspend

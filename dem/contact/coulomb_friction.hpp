@@ -1,26 +1,38 @@
-// Coulomb friction limit of the stick/slide spring (paper 000, text after eq. 4 and eq. 5):
-//   |F_t| <= mu_C |F_n|,
-// with F_n the full normal contact force (spring + dashpot). Dimensionless. mu = 0 gives frictionless contacts.
+// Coulomb friction, a tangential sub-model (paper 000, text after eq. 4 and eq. 5; paper 004 eq. 16):
+//   |F_t| <= mu |L|,
+// L the load of the normal sub-model composed with it (NormalContact::load: the full spring + dashpot force of the
+// linear laws, the elastic force F_n + F_adh of Hertz). Dimensionless. The case key of mu is the normal law's
+// (`mu`, or `mu_s` for hertz_adhesive); mu = 0 is read as no friction (NoFriction).
 #pragma once
 #include <cmath>
 #include <string>
+#include <string_view>
 
-#include "core/error.hpp"
+#include "core/range.hpp"
 
 namespace suspend {
 
 struct CoulombFrictionParams {
-  double mu = 1.0;  // mu_C, paper 000 table 1 (frictional case)
-  void validate() const {
-    if (!(mu >= 0.0)) throw InputError("contact.mu = " + std::to_string(mu) + " must be >= 0");
-  }
+  double mu = 1.0;
 };
 
 struct CoulombFriction {
+  static constexpr std::string_view name = "coulomb";
   CoulombFrictionParams p;
-  void validate() const { p.validate(); }
-  // Largest tangential force the contact can carry for a signed normal force f_n (positive = repulsive).
-  double limit(double f_n) const { return p.mu * std::abs(f_n); }
+  void validate() const { require(p.mu, Range::non_negative(), "contact.mu"); }
+  // Largest tangential force the contact can carry under a signed load (positive = repulsive).
+  double limit(double load) const { return p.mu * std::abs(load); }
+  double coefficient() const { return p.mu; }
+
+  template <class Reader>
+  static CoulombFriction read(Reader& r, std::string_view mu_key, double default_mu) {
+    return {{r.number(std::string(mu_key), default_mu, Range::non_negative())}};
+  }
+  template <class Writer>
+  void write(Writer& w, std::string_view mu_key) const {
+    w.text("friction", name);
+    w.number(mu_key, p.mu);
+  }
 };
 
 }  // namespace suspend

@@ -1,15 +1,19 @@
-// Hertz contact with constant adhesion at a roughness height (paper 004, section II D, eqs. 14-18).
+// Hertz contact with constant adhesion at a roughness height, a normal sub-model (paper 004, section II D,
+// eqs. 14-18). F_adh = 0 is Hertz without adhesion.
 //
 // Contact while the surface gap h is below the roughness height h_r: compression delta = h_r - h > 0
 // (no overlap needed; the spheres' hydrodynamic surfaces stay apart by h). Forces ON j (n from i to j):
 //   normal      F_n n,  F_n = k_n delta^(3/2) - F_adh          (eq. 14; positive = repulsive)
 //               the Hertz part goes to contact_normal, -F_adh n to adhesion
-//   tangential  F_t = -k_t Y (Y = tangential stretch)           (eq. 15)
-//               sliding when |F_t| reaches mu_s (F_n + F_adh) = mu_s k_n delta^(3/2)   (eq. 16)
+//   tangential  (a friction sub-model composed with it, contact_model.hpp) F_t = -k_t Y (Y = tangential stretch,
+//               eq. 15); its load is the elastic force F_n + F_adh = k_n delta^(3/2): Coulomb friction slides at
+//               mu_s (F_n + F_adh) (eq. 16), critical-load friction acts once F_n + F_adh exceeds F_CL.
 //               k_t = (2/7) k_n sqrt(delta_bar), delta_bar = eps_bar h_r the typical compression   (eqs. 17-18):
 //               the classic 2/7 tangential/normal ratio applied to the Hertz secant stiffness
 //               F/delta = k_n sqrt(delta) at the typical compression, so k_t is a constant [force/length].
 //   torques     at the contact point, lever arms of eq. 11.
+//   rolling     (optional sub-model) default k_r = k_n sqrt(delta_bar) / 100, the secant stiffness over 100 as for
+//               the linear spring; its limit mu_r (F_n + F_adh).
 // Zero-force compression delta_0 = (F_adh / k_n)^(2/3); pull-off force F_adh (the tension at delta -> 0+, where
 // friction vanishes too). No hysteresis: the contact ends as soon as delta <= 0 (paper 004 after eq. 16).
 //
@@ -26,22 +30,21 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <string_view>
 
 #include "core/error.hpp"
+#include "core/range.hpp"
 #include "dem/contact/pair_geometry.hpp"
-#include "dem/contact/pair_history.hpp"
-#include "dem/contact/stick_slide.hpp"
 
 namespace suspend {
 
 // Defaults: paper 004 FDM/FCM set-up: h_r = 5e-3 a_1, eps_bar = 5e-2, Gamma-bar = 1 (k_n from eq. 17 with
-// gammadot_0 = 1), G_adh with Gamma-bar x G_adh = 0.9 (section II E 2), mu_s = 0.5.
+// gammadot_0 = 1), G_adh with Gamma-bar x G_adh = 0.9 (section II E 2); mu_s = 0.5 is the friction's default.
 struct HertzAdhesiveParams {
   double roughness = 5.0e-3;                                                   // h_r
   double eps_bar = 5.0e-2;                                                     // delta_bar / h_r
   double kn = 6.0 * std::numbers::pi / std::pow(5.0e-2 * 5.0e-3, 1.5);         // Gamma-bar = 1
   double f_adh = 0.9 * 6.0 * std::numbers::pi;                                 // G_adh = 0.9
-  double mu_s = 0.5;
   double repulsion_onset = 0.1;      // h_s / h_r
   double repulsion_stiffness = 1.0e2;  // k_s / k_n
   void validate() const {
@@ -55,7 +58,6 @@ struct HertzAdhesiveParams {
     positive(eps_bar, "eps_bar");
     positive(kn, "kn");
     non_negative(f_adh, "f_adh");
-    non_negative(mu_s, "mu_s");
     non_negative(repulsion_stiffness, "repulsion_stiffness");
     if (!(repulsion_onset >= 0.0 && repulsion_onset <= 1.0))
       throw InputError("contact.repulsion_onset = " + std::to_string(repulsion_onset) + " must be in [0, 1]");
@@ -65,20 +67,25 @@ struct HertzAdhesiveParams {
 // Paper 004's dimensionless groups -> parameters, forces in eta_0 gammadot_0 a_1^2 (a_1 = 1):
 // Gamma-bar = 6 pi / (k_n (eps_bar h_r)^(3/2)) (eq. 17), G_adh = F_adh / (6 pi) (section II E 1).
 inline HertzAdhesiveParams hertz_adhesive_from_groups(double gamma_bar, double g_adh, double eps_bar,
-                                                      double roughness, double mu_s) {
+                                                      double roughness) {
   if (!(gamma_bar > 0.0)) throw InputError("contact.gamma_bar = " + std::to_string(gamma_bar) + " must be > 0");
   HertzAdhesiveParams p;
   p.roughness = roughness;
   p.eps_bar = eps_bar;
   p.kn = 6.0 * std::numbers::pi / (gamma_bar * std::pow(eps_bar * roughness, 1.5));
   p.f_adh = 6.0 * std::numbers::pi * g_adh;
-  p.mu_s = mu_s;
   p.validate();
   return p;
 }
 
 class HertzAdhesive {
  public:
+  static constexpr std::string_view name = "hertz_adhesive";
+  static constexpr std::string_view documentation = "docs/contact.md, section 'Hertz + constant adhesion at roughness height'";
+  static constexpr std::string_view friction_key = "mu_s";
+  static constexpr std::string_view default_friction = "coulomb";
+  static constexpr double default_mu = 0.5;  // paper 004's mu_s
+
   HertzAdhesive() : HertzAdhesive(HertzAdhesiveParams{}) {}
   explicit HertzAdhesive(const HertzAdhesiveParams& params)
       : p_(params), kt_(2.0 / 7.0 * params.kn * std::sqrt(params.eps_bar * params.roughness)),
@@ -92,32 +99,26 @@ class HertzAdhesive {
   double zero_force_compression() const { return std::pow(p_.f_adh / p_.kn, 2.0 / 3.0); }  // delta_0
   double pull_off_force() const { return p_.f_adh; }
   double range() const { return p_.roughness; }
+  // dF/d delta = (3/2) k_n sqrt(delta) at the largest compression h_r, stiffened by the supplementary wall.
+  double stiffness_scale() const {
+    return 1.5 * p_.kn * std::sqrt(p_.roughness) * (1.0 + p_.repulsion_stiffness * std::sqrt(p_.repulsion_onset));
+  }
+  double secant_stiffness() const { return p_.kn * std::sqrt(p_.eps_bar * p_.roughness); }  // at delta_bar
+  double tangential_stiffness() const { return kt_; }
+  double adhesion_force() const { return p_.f_adh; }
 
-  PairForce operator()(const PairGeometry& g, const RelativeMotion& m, double dt, PairHistory& h) const {
-    PairForce f;
+  NormalContact apply(const PairGeometry& g, const RelativeMotion&, PairForce& f) const {
     const double gap = g.gap();
     const double delta = p_.roughness - gap;
-    if (!(delta > 0.0)) {
-      h.reset();
-      return f;
-    }
-    h.in_contact = true;
+    if (!(delta > 0.0)) return {};
     const double elastic = p_.kn * delta * std::sqrt(delta);
     const double s = h_s_ - gap;
     const double supplementary = s > 0.0 ? k_s_ * s * std::sqrt(s) : 0.0;
     f[Contribution::contact_normal] = (elastic + supplementary) * g.n;
     f[Contribution::adhesion] = -p_.f_adh * g.n;
-
-    const Vec3 u_c = m.contact_velocity(g);
-    const Vec3 u_t = u_c - u_c.dot(g.n) * g.n;
-    const double limit = p_.mu_s * elastic;
-    const StickSlideResult t = stick_slide(h.tangential_stretch, g.n, u_t, dt, kt_, limit);
-    f.add_tangential(g, t.force_on_j, Contribution::contact_tangential);
     // dF_n/d(delta): the Hertz tangent 1.5 k_n sqrt(delta), and the supplementary wall's while it acts.
     f.normal_stiffness = 1.5 * (p_.kn * std::sqrt(delta) + (s > 0.0 ? k_s_ * std::sqrt(s) : 0.0));
-    f.tangential_stiffness = t.sliding || !(limit > 0.0) ? 0.0 : kt_;
-    f.sliding = t.sliding && limit > 0.0;
-    return f;
+    return {true, elastic};
   }
 
   double energy(const PairGeometry& g) const {
@@ -127,6 +128,28 @@ class HertzAdhesive {
     const double s = h_s_ - gap;
     const double e_s = s > 0.0 ? 0.4 * k_s_ * s * s * std::sqrt(s) : 0.0;
     return 0.4 * p_.kn * delta * delta * std::sqrt(delta) - p_.f_adh * delta + e_s;
+  }
+
+  // Paper 004: Gamma-bar = 6 pi eta a_1^2 gammadot / (k_n (eps_bar h_r)^(3/2)) (eq. 17), G_adh = F_adh / (6 pi).
+  template <class Reader>
+  static HertzAdhesive read(Reader& r, bool) {
+    const double roughness = r.number("roughness", 5.0e-3, Range::positive());
+    const double eps_bar = r.number("eps_bar", 5.0e-2, Range::positive());
+    const double gamma_bar = r.number("gamma_bar", 1.0, Range::positive());
+    const double g_adh = r.number("g_adh", 0.9, Range::non_negative());
+    HertzAdhesiveParams p = hertz_adhesive_from_groups(gamma_bar, g_adh, eps_bar, roughness);
+    p.repulsion_onset = r.number("repulsion_onset", p.repulsion_onset, Range::closed(0.0, 1.0));
+    p.repulsion_stiffness = r.number("repulsion_stiffness", p.repulsion_stiffness, Range::non_negative());
+    return HertzAdhesive(p);
+  }
+  template <class Writer>
+  void write(Writer& w, bool) const {
+    w.number("roughness", p_.roughness);
+    w.number("eps_bar", p_.eps_bar);
+    w.number("gamma_bar", 6.0 * std::numbers::pi / (p_.kn * std::pow(p_.eps_bar * p_.roughness, 1.5)));
+    w.number("g_adh", p_.f_adh / (6.0 * std::numbers::pi));
+    w.number("repulsion_onset", p_.repulsion_onset);
+    w.number("repulsion_stiffness", p_.repulsion_stiffness);
   }
 
  private:

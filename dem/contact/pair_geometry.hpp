@@ -88,6 +88,14 @@ struct PairForce {
   }
 };
 
+// What a normal sub-model tells the tangential and rolling sub-models composed with it (contact_model.hpp):
+// whether the pair is in contact, and the load that friction and rolling resistance are proportional to (the
+// signed spring + dashpot force of the linear laws; the Hertz elastic force, F_n + F_adh, of paper 004 eq. 16).
+struct NormalContact {
+  bool active = false;
+  double load = 0.0;
+};
+
 // Pair stresslet of one force contribution, S = -sym(d F_j^T) (paper 000 eqs. 9c-9d with F_ij = -F_j). Summed over
 // pairs and divided by the volume it gives that contribution's Sigma. Split between the two particles in the
 // ratio a_i : a_j when a per-particle stresslet is needed (paper 004, eq. 12; see stresslet_share_i).

@@ -1,38 +1,65 @@
-// Linear soft repulsion between overlapping spheres: the simplest honest contact law.
+// Soft repulsion, a normal sub-model: the simplest honest contact law.
 // F_j = k_n * delta * n for overlap delta = -(gap) > 0, zero otherwise (a frictionless, undamped linear spring;
-// paper 000 eq. 4 with k_t = gamma_n = 0). Potential energy (k_n/2) delta^2, so F_j = -dE/dr_j.
-// Units: k_n in eta_0 gammadot a_1 (the stiffness k-hat of paper 000 eq. 12 when a_0 = a_1).
+// paper 000 eq. 4 with k_t = gamma_n = 0 unless a friction sub-model is composed, then k_t = (2/7) k_n).
+// Potential energy (k_n/2) delta^2, so F_j = -dE/dr_j.
+// Units: k_n in eta_0 gammadot a_1 (the stiffness k-hat of paper 000 eq. 12 when a_0 = a_1, io/units.hpp).
 #pragma once
-#include <string>
+#include <string_view>
 
-#include "core/error.hpp"
+#include "core/range.hpp"
 #include "dem/contact/pair_geometry.hpp"
 
 namespace suspend {
 
 struct SoftRepulsionParams {
   double kn = 1.0e4;
-  void validate() const {
-    if (!(kn > 0.0)) throw InputError("contact.kn = " + std::to_string(kn) + " must be > 0");
-  }
+  double kt = 2.0 / 7.0 * 1.0e4;  // the tangential spring, used only with a friction sub-model
 };
 
 struct SoftRepulsion {
+  static constexpr std::string_view name = "soft_repulsion";
+  static constexpr std::string_view documentation = "docs/contact.md, section 'Soft repulsion'";
+  static constexpr std::string_view friction_key = "mu";
+  static constexpr std::string_view default_friction = "none";
+  static constexpr double default_mu = 1.0;
+
   SoftRepulsionParams p;
-  void validate() const { p.validate(); }
+
+  void validate() const {
+    require(p.kn, Range::positive(), "contact.kn");
+    require(p.kt, Range::positive(), "contact.kt");
+  }
   double range() const { return 0.0; }  // acts only on overlap
-  PairForce operator()(const PairGeometry& g) const {
-    PairForce f;
+  double stiffness_scale() const { return p.kn; }
+  double secant_stiffness() const { return p.kn; }
+  double tangential_stiffness() const { return p.kt; }
+  double adhesion_force() const { return 0.0; }
+
+  // Adds the normal force on j; returns whether the pair is in contact and the load friction acts against.
+  NormalContact apply(const PairGeometry& g, const RelativeMotion&, PairForce& f) const {
     const double delta = -g.gap();
-    if (delta > 0.0) {
-      f[Contribution::contact_normal] = p.kn * delta * g.n;
-      f.normal_stiffness = p.kn;
-    }
-    return f;
+    if (!(delta > 0.0)) return {};
+    const double f_n = p.kn * delta;
+    f[Contribution::contact_normal] = f_n * g.n;
+    f.normal_stiffness = p.kn;
+    return {true, f_n};
   }
   double energy(const PairGeometry& g) const {
     const double delta = -g.gap();
     return delta > 0.0 ? 0.5 * p.kn * delta * delta : 0.0;
+  }
+
+  template <class Reader>
+  static SoftRepulsion read(Reader& r, bool with_friction) {
+    SoftRepulsion s;
+    s.p.kn = r.number("k_hat", s.p.kn, Range::positive());
+    s.p.kt = with_friction ? r.number("kt", 2.0 / 7.0 * s.p.kn, Range::positive()) : 2.0 / 7.0 * s.p.kn;
+    return s;
+  }
+  template <class Writer>
+  void write(Writer& w, bool with_friction) const {
+    w.number("k_hat", p.kn);
+    if (with_friction) w.number("kt", p.kt);
   }
 };
 

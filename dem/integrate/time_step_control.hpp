@@ -49,7 +49,7 @@ struct TimeStepParams {
 
 // The contact law's own range (no surface forces): the Hertz roughness height, 0 for laws acting on overlap.
 inline double contact_range(const ContactLaw& law) {
-  return std::visit([](const auto& l) { return l.contact.range(); }, law);
+  return std::visit([](const auto& l) { return l.contact_range(); }, law);
 }
 
 // The most steps a run may need to reach run.strain: more is refused at check time (io/case.cpp) and stops a run

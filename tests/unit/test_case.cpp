@@ -159,12 +159,12 @@ TEST(CaseContact, PaperGroupsBecomeHertzAdhesiveParameters) {
   YAML::Node root = YAML::Load(base);
   apply_override(root, "contact={law: hertz_adhesive, gamma_bar: 0.5, g_adh: 1.8, mu_s: 0.3}");
   const Case c = parse_case(root, "");
-  const auto& law = std::get<ComposedLaw<HertzAdhesive>>(c.simulation.contact);
-  const HertzAdhesiveParams& p = law.contact.params();
+  const auto& law = std::get<ComposedLaw<HertzAdhesiveCoulomb>>(c.simulation.contact);
+  const HertzAdhesiveParams& p = law.contact.normal.params();
   // Paper 004 eq. 17: Gamma-bar = 6 pi eta a^2 gammadot / (k_n (eps_bar h_r)^(3/2)); G_adh = F_adh / (6 pi eta a^2 gammadot).
   EXPECT_NEAR(p.kn, 6.0 * M_PI / (0.5 * std::pow(0.05 * 0.005, 1.5)), 1e-6 * p.kn);
   EXPECT_NEAR(p.f_adh, 6.0 * M_PI * 1.8, 1e-12);
-  EXPECT_DOUBLE_EQ(p.mu_s, 0.3);
+  EXPECT_DOUBLE_EQ(law.contact.friction.p.mu, 0.3);
   EXPECT_DOUBLE_EQ(p.roughness, 5e-3);
   // The resolved case prints the groups back.
   const YAML::Node y = to_yaml(c);
@@ -179,8 +179,8 @@ TEST(CaseContact, LinearSpringVariantsAndSurfaceForces) {
                        " attraction: {hamaker: 6.3e-5}}");
   const Case c = parse_case(root, "");
   const auto& law = std::get<ComposedLaw<LinearSpringCriticalLoadRolling>>(c.simulation.contact);
-  EXPECT_DOUBLE_EQ(law.contact.p.kn, 2.0e4);
-  EXPECT_DOUBLE_EQ(law.contact.p.kt, 2.0 / 7.0 * 2.0e4);  // paper 000 table 1 ratio by default
+  EXPECT_DOUBLE_EQ(law.contact.normal.p.kn, 2.0e4);
+  EXPECT_DOUBLE_EQ(law.contact.normal.p.kt, 2.0 / 7.0 * 2.0e4);  // paper 000 table 1 ratio by default
   EXPECT_DOUBLE_EQ(law.contact.friction.p.critical_load, 3.0);
   EXPECT_DOUBLE_EQ(law.contact.rolling.p.kr, 2.0e2);  // k_n / 100
   ASSERT_TRUE(law.surface.repulsion && law.surface.attraction);

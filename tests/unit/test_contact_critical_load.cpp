@@ -5,7 +5,7 @@
 #include <random>
 
 #include "contact_test_support.hpp"
-#include "dem/contact/linear_spring_dashpot.hpp"
+#include "dem/contact/contact_model.hpp"
 
 using namespace suspend;
 using namespace suspend::test;
@@ -13,7 +13,7 @@ using namespace suspend::test;
 namespace {
 LinearSpringCriticalLoad law(double mu, double f_cl) {
   LinearSpringCriticalLoad l;
-  l.p = {1.0e4, 2.0e3, 0.0};
+  l.normal.p = {1.0e4, 2.0e3, 0.0};
   l.friction.p = {mu, f_cl};
   l.validate();
   return l;
@@ -88,5 +88,5 @@ TEST(CriticalLoad, TorquesBalanceAndResultRotatesWithThePair) {
 }
 
 TEST(CriticalLoad, RejectsNegativeThreshold) {
-  EXPECT_THROW((CriticalLoadFrictionParams{0.5, -1.0}.validate()), InputError);
+  EXPECT_THROW((CriticalLoadFriction{{0.5, -1.0}}.validate()), InputError);
 }

@@ -9,7 +9,7 @@
 #include <random>
 
 #include "contact_test_support.hpp"
-#include "dem/contact/hertz_adhesive.hpp"
+#include "dem/contact/contact_model.hpp"
 
 using namespace suspend;
 using namespace suspend::test;
@@ -22,13 +22,14 @@ HertzAdhesiveParams simple() {
   p.eps_bar = 0.05;
   p.kn = 1.0e5;
   p.f_adh = 2.0;
-  p.mu_s = 0.5;
   return p;
 }
+// Paper 004's contact: Hertz with adhesion and Coulomb friction mu_s = 0.5 (eq. 16).
+HertzAdhesiveCoulomb hertz(const HertzAdhesiveParams& p) { return {HertzAdhesive(p), {{0.5}}}; }
 RelativeMotion at_rest() { return {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()}; }
 // Equal unit spheres on the y axis at surface gap h.
 PairGeometry at_gap(double h) { return PairGeometry::from(Vec3(0.0, 2.0 + h, 0.0), 1.0, 1.0); }
-double normal_force(const HertzAdhesive& law, double h) {
+double normal_force(const HertzAdhesiveCoulomb& law, double h) {
   PairHistory hist;
   const PairForce f = law(at_gap(h), at_rest(), 1e-3, hist);
   return f.total_on_j().y();  // positive = repulsive
@@ -36,7 +37,7 @@ double normal_force(const HertzAdhesive& law, double h) {
 }  // namespace
 
 TEST(HertzAdhesive, ContactStartsBelowTheRoughnessHeight) {
-  const HertzAdhesive law(simple());
+  const HertzAdhesiveCoulomb law = hertz(simple());
   PairHistory h;
   EXPECT_EQ(law(at_gap(0.0100001), at_rest(), 1e-3, h).total_on_j().norm(), 0.0);
   EXPECT_FALSE(h.in_contact);
@@ -47,14 +48,14 @@ TEST(HertzAdhesive, ContactStartsBelowTheRoughnessHeight) {
 }
 
 TEST(HertzAdhesive, ZeroForceCompressionAndPullOff) {
-  const HertzAdhesive law(simple());
+  const HertzAdhesiveCoulomb law = hertz(simple());
   const double delta0 = std::pow(2.0 / 1.0e5, 2.0 / 3.0);
-  EXPECT_NEAR(law.zero_force_compression(), delta0, 1e-15);
+  EXPECT_NEAR(law.normal.zero_force_compression(), delta0, 1e-15);
   EXPECT_NEAR(normal_force(law, 0.01 - delta0), 0.0, 1e-12);
   EXPECT_LT(normal_force(law, 0.01 - 0.99 * delta0), 0.0);  // attractive below delta_0
   EXPECT_GT(normal_force(law, 0.01 - 1.01 * delta0), 0.0);
   // Pull-off: the largest tension the contact sustains is F_adh, reached as delta -> 0+.
-  EXPECT_DOUBLE_EQ(law.pull_off_force(), 2.0);
+  EXPECT_DOUBLE_EQ(law.normal.pull_off_force(), 2.0);
   double max_tension = 0.0;
   for (int k = 1; k <= 1000; ++k) max_tension = std::max(max_tension, -normal_force(law, 0.01 - k * 1e-8));
   EXPECT_NEAR(max_tension, 2.0, 1e-6);
@@ -62,13 +63,13 @@ TEST(HertzAdhesive, ZeroForceCompressionAndPullOff) {
 }
 
 TEST(HertzAdhesive, TangentialStiffnessFollowsEq18) {
-  const HertzAdhesive law(simple());
-  EXPECT_NEAR(law.kt(), 2.0 / 7.0 * 1.0e5 * std::sqrt(0.05 * 0.01), 1e-9);
+  const HertzAdhesiveCoulomb law = hertz(simple());
+  EXPECT_NEAR(law.normal.kt(), 2.0 / 7.0 * 1.0e5 * std::sqrt(0.05 * 0.01), 1e-9);
 }
 
 TEST(HertzAdhesive, SlipThresholdIsMuSTimesElasticForce) {
-  const HertzAdhesive law(simple());
-  const double delta0 = law.zero_force_compression();
+  const HertzAdhesiveCoulomb law = hertz(simple());
+  const double delta0 = law.normal.zero_force_compression();
   const PairGeometry g = at_gap(0.01 - delta0);  // zero load: the paper's finite resistance mu_s F_adh
   const RelativeMotion m{Vec3::Zero(), Vec3(3.0, 0.0, 0.0), Vec3::Zero(), Vec3::Zero()};
   PairHistory h;
@@ -78,11 +79,11 @@ TEST(HertzAdhesive, SlipThresholdIsMuSTimesElasticForce) {
   // Sticking: F_t = -k_t Y with Y the accumulated slip (eq. 15).
   PairHistory h2;
   const PairForce f2 = law(at_gap(0.005), m, 1e-6, h2);
-  EXPECT_NEAR(f2[Contribution::contact_tangential].x(), -law.kt() * 3e-6, 1e-12);
+  EXPECT_NEAR(f2[Contribution::contact_tangential].x(), -law.normal.kt() * 3e-6, 1e-12);
 }
 
 TEST(HertzAdhesive, ForceIsMinusGradientOfEnergyIncludingTheSupplementaryRepulsion) {
-  const HertzAdhesive law(simple());  // supplementary repulsion below h_s = 0.001
+  const HertzAdhesiveCoulomb law = hertz(simple());  // supplementary repulsion below h_s = 0.001
   for (double h : {0.009, 0.006, 0.002, 0.0008, 0.0002, -0.0005}) {
     const double r = 2.4 + h;
     const Vec3 n(0.3, -0.4, std::sqrt(0.75));
@@ -95,16 +96,16 @@ TEST(HertzAdhesive, ForceIsMinusGradientOfEnergyIncludingTheSupplementaryRepulsi
 
 TEST(HertzAdhesive, SupplementaryRepulsionActsOnlyNearHydrodynamicContact) {
   HertzAdhesiveParams p = simple();
-  const HertzAdhesive law(p);
+  const HertzAdhesiveCoulomb law = hertz(p);
   p.repulsion_stiffness = 0.0;
-  const HertzAdhesive plain(p);
+  const HertzAdhesiveCoulomb plain = hertz(p);
   EXPECT_DOUBLE_EQ(normal_force(law, 0.0011), normal_force(plain, 0.0011));
   // At h = 0: k_s (h_s)^(3/2) extra, with k_s = 100 k_n and h_s = 0.1 h_r.
   EXPECT_NEAR(normal_force(law, 0.0) - normal_force(plain, 0.0), 100.0 * 1.0e5 * std::pow(0.001, 1.5), 1e-9);
 }
 
 TEST(HertzAdhesive, ForceOnIIsMinusForceOnJAndTorquesBalance) {
-  const HertzAdhesive law(simple());
+  const HertzAdhesiveCoulomb law = hertz(simple());
   std::mt19937_64 rng(41);
   for (int trial = 0; trial < 50; ++trial) {
     const Vec3 n = random_vector(rng).normalized();
@@ -125,7 +126,7 @@ TEST(HertzAdhesive, ForceOnIIsMinusForceOnJAndTorquesBalance) {
 }
 
 TEST(HertzAdhesive, RotatingThePairConfigurationRotatesTheResult) {
-  const HertzAdhesive law(simple());
+  const HertzAdhesiveCoulomb law = hertz(simple());
   std::mt19937_64 rng(42);
   for (int trial = 0; trial < 30; ++trial) {
     const Mat3 R = random_rotation(rng);
@@ -144,12 +145,12 @@ TEST(HertzAdhesive, RotatingThePairConfigurationRotatesTheResult) {
 TEST(HertzAdhesive, PaperGroupsGiveTheQuotedAdhesiveCompression) {
   // Paper 004 section II E 2: Gamma-bar x G_adh = 0.9 "implies that the typical asperity compression due to the
   // adhesive force alone is delta/h_r ~ 0.9 eps_bar ~ 4.6e-2" (exactly 0.9^(2/3) eps_bar = 4.66e-2).
-  const HertzAdhesiveParams p = hertz_adhesive_from_groups(0.09, 10.0, 0.05, 5e-3, 0.5);
+  const HertzAdhesiveParams p = hertz_adhesive_from_groups(0.09, 10.0, 0.05, 5e-3);
   EXPECT_NEAR(p.kn, 6.0 * kPi / (0.09 * std::pow(0.05 * 5e-3, 1.5)), 1e-6 * p.kn);
   EXPECT_NEAR(p.f_adh, 60.0 * kPi, 1e-12);
-  const HertzAdhesive law(p);
-  EXPECT_NEAR(law.zero_force_compression() / 5e-3, 4.6e-2, 0.1e-2);
-  EXPECT_NEAR(law.zero_force_compression() / 5e-3, std::pow(0.9, 2.0 / 3.0) * 0.05, 1e-12);
+  const HertzAdhesiveCoulomb law = hertz(p);
+  EXPECT_NEAR(law.normal.zero_force_compression() / 5e-3, 4.6e-2, 0.1e-2);
+  EXPECT_NEAR(law.normal.zero_force_compression() / 5e-3, std::pow(0.9, 2.0 / 3.0) * 0.05, 1e-12);
   // Defaults are the paper's set-up: Gamma-bar = 1, G_adh = 0.9.
   const HertzAdhesiveParams d;
   EXPECT_NEAR(6.0 * kPi / (d.kn * std::pow(d.eps_bar * d.roughness, 1.5)), 1.0, 1e-12);
@@ -163,5 +164,5 @@ TEST(HertzAdhesive, RejectsBadParameters) {
   p = simple();
   p.repulsion_onset = 1.5;
   EXPECT_THROW(HertzAdhesive{p}, InputError);
-  EXPECT_THROW(hertz_adhesive_from_groups(0.0, 1.0, 0.05, 5e-3, 0.5), InputError);
+  EXPECT_THROW(hertz_adhesive_from_groups(0.0, 1.0, 0.05, 5e-3), InputError);
 }

@@ -10,7 +10,7 @@
 
 #include "contact_test_support.hpp"
 #include "core/box.hpp"
-#include "dem/contact/linear_spring_dashpot.hpp"
+#include "dem/contact/contact_model.hpp"
 #include "dem/contact_history.hpp"
 
 using namespace suspend;
@@ -162,7 +162,7 @@ TEST(ContactHistory, FrictionalContactKeepsItsHistoryThroughPeriodicWraps) {
   Box box(10.0, 10.0, 10.0);
   box.set_shear_offset(3.0);
   LinearSpringCoulomb law;
-  law.p = {1.0e4, 2.0e3, 0.0};
+  law.normal.p = {1.0e4, 2.0e3, 0.0};
   law.friction.p.mu = 0.5;
   const double dt = 1e-3;
   const Vec3 u_i(200.0, 0.0, 0.0), u_j(200.4, 0.0, 0.3);  // both cross x = 10 during the run; j slides

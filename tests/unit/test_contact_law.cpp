@@ -12,7 +12,7 @@ using namespace suspend::test;
 
 TEST(ContactLaw, ComposedLawAddsSurfaceForcesOnTopOfTheContact) {
   ComposedLaw<LinearSpringCoulomb> composed;
-  composed.contact.p = {1.0e4, 2.0e3, 0.0};
+  composed.contact.normal.p = {1.0e4, 2.0e3, 0.0};
   composed.surface.repulsion = ElectrostaticRepulsion{{1.0, 0.02, 20.0}};
   composed.surface.attraction = VanDerWaals{};
   const ContactLaw law = composed;
@@ -31,7 +31,7 @@ TEST(ContactLaw, ComposedLawAddsSurfaceForcesOnTopOfTheContact) {
 }
 
 TEST(ContactLaw, SoftRepulsionIsOneAlternativeAndCarriesNoHistory) {
-  const ContactLaw law = ComposedLaw<SoftRepulsion>{SoftRepulsion{{1.0e4}}, {}};
+  const ContactLaw law = ComposedLaw<ContactModel<SoftRepulsion>>{{SoftRepulsion{{1.0e4}}}, {}};
   const PairGeometry g = PairGeometry::from(Vec3(0.0, 1.99, 0.0), 1.0, 1.0);
   PairHistory h{Vec3(1.0, 0.0, 0.0), Vec3::Zero(), true};
   const PairForce f =
@@ -47,8 +47,8 @@ TEST(ContactLaw, EvaluatePairsVisitsOnceAndMatchesTheDirectCall) {
   p.roughness = 0.01;
   p.kn = 1.0e5;
   p.f_adh = 1.0;
-  const ContactLaw law = ComposedLaw<HertzAdhesive>{HertzAdhesive(p), {}};
-  const HertzAdhesive direct(p);
+  const HertzAdhesiveCoulomb direct{HertzAdhesive(p), {{0.5}}};
+  const ContactLaw law = ComposedLaw<HertzAdhesiveCoulomb>{direct, {}};
   const std::vector<PairGeometry> geometry = {PairGeometry::from(Vec3(2.005, 0.0, 0.0), 1.0, 1.0),
                                               PairGeometry::from(Vec3(0.0, 2.5, 0.0), 1.0, 1.0),
                                               PairGeometry::from(Vec3(0.0, 0.0, 2.397), 1.0, 1.4)};
@@ -69,12 +69,12 @@ TEST(ContactLaw, EvaluatePairsVisitsOnceAndMatchesTheDirectCall) {
 }
 
 TEST(ContactLaw, EveryAlternativeValidatesAndReportsItsRange) {
-  std::vector<ContactLaw> laws = {ComposedLaw<SoftRepulsion>{},
+  std::vector<ContactLaw> laws = {ComposedLaw<ContactModel<SoftRepulsion>>{},
                                   ComposedLaw<LinearSpringCoulomb>{},
                                   ComposedLaw<LinearSpringCoulombRolling>{},
                                   ComposedLaw<LinearSpringCriticalLoad>{},
                                   ComposedLaw<LinearSpringCriticalLoadRolling>{},
-                                  ComposedLaw<HertzAdhesive>{}};
+                                  ComposedLaw<HertzAdhesiveCoulomb>{}};
   for (const auto& l : laws) EXPECT_NO_THROW(validate(l));
   EXPECT_DOUBLE_EQ(interaction_range(laws.back()), 5e-3);  // h_r
 }

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "contact_test_support.hpp"
-#include "dem/contact/linear_spring_dashpot.hpp"
+#include "dem/contact/contact_model.hpp"
 
 using namespace suspend;
 using namespace suspend::test;
@@ -14,7 +14,7 @@ using namespace suspend::test;
 namespace {
 LinearSpringCoulomb law(double kn, double kt, double gamma_n, double mu) {
   LinearSpringCoulomb l;
-  l.p = {kn, kt, gamma_n};
+  l.normal.p = {kn, kt, gamma_n};
   l.friction.p.mu = mu;
   l.validate();
   return l;
@@ -205,9 +205,9 @@ TEST(LinearSpring, RigidRotationOfAnOverlappingPairLeavesTheSpringUnloaded) {
 
 TEST(LinearSpring, RejectsNonPositiveStiffness) {
   LinearSpringCoulomb l;
-  l.p.kn = 0.0;
+  l.normal.p.kn = 0.0;
   EXPECT_THROW(l.validate(), InputError);
-  l.p.kn = 1.0;
+  l.normal.p.kn = 1.0;
   l.friction.p.mu = -1.0;
   EXPECT_THROW(l.validate(), InputError);
 }

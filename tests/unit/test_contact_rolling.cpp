@@ -6,7 +6,7 @@
 #include <random>
 
 #include "contact_test_support.hpp"
-#include "dem/contact/linear_spring_dashpot.hpp"
+#include "dem/contact/contact_model.hpp"
 
 using namespace suspend;
 using namespace suspend::test;
@@ -14,7 +14,7 @@ using namespace suspend::test;
 namespace {
 LinearSpringCoulombRolling law(double kr, double mu_r) {
   LinearSpringCoulombRolling l;
-  l.p = {1.0e4, 2.0e3, 0.0};
+  l.normal.p = {1.0e4, 2.0e3, 0.0};
   l.friction.p.mu = 1.0;
   l.rolling.p = {kr, mu_r};
   l.validate();

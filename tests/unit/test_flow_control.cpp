@@ -44,7 +44,7 @@ TEST(StressControl, HitsTheTargetWithContactsAndLubricationAndEqualsTheRateContr
   const Box box(10, 10, 10);
   SimulationParams params;
   params.lubrication = true;
-  params.contact = ComposedLaw<SoftRepulsion>{SoftRepulsion{{1.0e3}}, {}};
+  params.contact = ComposedLaw<ContactModel<SoftRepulsion>>{{SoftRepulsion{{1.0e3}}}, {}};
   params.flow.control = FlowControl::stress;
   params.flow.shear_stress = 2.5;
   params.resistance.tolerance = 1e-12;
@@ -69,7 +69,7 @@ TEST(StressControl, CheckpointedStateContinuesBitForBit) {
   const Box box(10, 10, 10);
   SimulationParams params;
   params.lubrication = true;
-  params.contact = ComposedLaw<SoftRepulsion>{SoftRepulsion{{1.0e3}}, {}};
+  params.contact = ComposedLaw<ContactModel<SoftRepulsion>>{{SoftRepulsion{{1.0e3}}}, {}};
   params.flow.control = FlowControl::stress;
   params.flow.shear_stress = 2.0;
   PairwiseSimulation whole(cluster(), box, params);

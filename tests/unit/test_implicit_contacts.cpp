@@ -32,9 +32,9 @@ SimulationParams frictional_lubricated(double kn) {
   params.lubrication = true;
   params.resistance.tolerance = 1e-12;
   LinearSpringCoulomb law;
-  law.p.kn = kn;
-  law.p.kt = 2.0 / 7.0 * kn;
-  law.p.gamma_n = 0.0;
+  law.normal.p.kn = kn;
+  law.normal.p.kt = 2.0 / 7.0 * kn;
+  law.normal.p.gamma_n = 0.0;
   law.friction.p.mu = 1.0;
   params.contact = ComposedLaw<LinearSpringCoulomb>{law, {}};
   params.time_step.implicit_contacts = true;
@@ -98,7 +98,7 @@ TEST(ImplicitContacts, SqueezedPairRelaxesAsTheExactBackwardEulerRecursionAtAnyS
   params.lubrication = true;
   params.resistance.tolerance = 1e-13;
   params.flow.shear_rate = 0.0;
-  params.contact = ComposedLaw<SoftRepulsion>{SoftRepulsion{{k}}, {}};
+  params.contact = ComposedLaw<ContactModel<SoftRepulsion>>{{SoftRepulsion{{k}}}, {}};
   params.time_step.implicit_contacts = true;
   params.time_step.mode = TimeStepParams::Mode::fixed;
   const hydro::PairLubrication lub(1.0, 1.0, params.resistance.lubrication);

@@ -18,7 +18,7 @@ SimulationParams inertial(double stokes_number, double kn, double dt) {
   SimulationParams params;
   params.integrator = Integrator::inertial;
   params.stokes_number = stokes_number;
-  params.contact = ComposedLaw<SoftRepulsion>{SoftRepulsion{{kn}}, {}};
+  params.contact = ComposedLaw<ContactModel<SoftRepulsion>>{{SoftRepulsion{{kn}}}, {}};
   params.time_step.mode = TimeStepParams::Mode::fixed;
   params.time_step.fixed = dt;
   params.max_overlap = 0.5;

@@ -35,7 +35,7 @@ TEST(Simulation, OverlappingPairSeparatesAtTheStokesVelocity) {
   params.flow.shear_rate = 1.0;
   PairwiseSimulation sim(st, box, params);
   sim.evaluate();
-  const double f = std::get<ComposedLaw<SoftRepulsion>>(params.contact).contact.p.kn * overlap;  // along z, pushing 1 away from 0
+  const double f = std::get<ComposedLaw<ContactModel<SoftRepulsion>>>(params.contact).contact.normal.p.kn * overlap;  // along z, pushing 1 away from 0
   EXPECT_NEAR(sim.state().particles.velocity[1].z(), f / (6 * pi), 1e-12);
   EXPECT_NEAR(sim.state().particles.velocity[0].z(), -f / (6 * pi), 1e-12);
   // Pair virial: -d F_j / V with d = 2 - overlap along z gives a positive pressure.
@@ -60,7 +60,7 @@ TEST(Simulation, ParticleCrossingTheShearedFaceIsRemapped) {
   const Vec3 r0 = sim.state().particles.position[0];
   const Vec3 u0 = sim.state().particles.velocity[0];
   EXPECT_NEAR(u0.x(), 2.0 * 9.999, 1e-12);
-  EXPECT_NEAR(u0.y(), std::get<ComposedLaw<SoftRepulsion>>(params.contact).contact.p.kn * overlap / (6 * pi), 1e-9);
+  EXPECT_NEAR(u0.y(), std::get<ComposedLaw<ContactModel<SoftRepulsion>>>(params.contact).contact.normal.p.kn * overlap / (6 * pi), 1e-9);
   sim.advance();
   const double offset = std::remainder((0.23 + 2.0 * 0.01) * 10.0, 10.0);
   EXPECT_NEAR(sim.box().shear_offset(), offset, 1e-12);
@@ -98,7 +98,7 @@ TEST(Simulation, ContactsAreThePairsWithANormalContactForce) {
   hp.kn = 1e6;
   hp.f_adh = 1.0;
   SimulationParams params;
-  params.contact = ComposedLaw<HertzAdhesive>{HertzAdhesive(hp), {std::nullopt, VanDerWaals{}}};
+  params.contact = ComposedLaw<HertzAdhesiveCoulomb>{{HertzAdhesive(hp), {{0.5}}}, {std::nullopt, VanDerWaals{}}};
   const double h = hp.roughness;
   const auto st = state_of({{5, 5, 5}, {7 + 0.4 * h, 5, 5}, {5, 15, 5}, {5, 17.4 + 0.9 * h, 5}, {15, 5, 15},
                             {15, 5, 17 + 1.5 * h}, {25, 25, 25}},

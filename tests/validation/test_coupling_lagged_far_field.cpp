@@ -121,7 +121,7 @@ TEST(LaggedFarField, SqueezedPairSeparatesAtTheExactRateOnLaggedSteps) {
   params.flow.shear_rate = 0.0;
   params.time_step.mode = TimeStepParams::Mode::fixed;
   params.time_step.fixed = 2e-4;
-  const double kn = std::get<ComposedLaw<SoftRepulsion>>(params.contact).contact.p.kn;
+  const double kn = std::get<ComposedLaw<ContactModel<SoftRepulsion>>>(params.contact).contact.normal.p.kn;
   const double x11a = 252.549849, x12a = -251.904583;  // tests/data/two_sphere_resistance_table.txt, xi = 1e-3
   FcmSimulation sim(state_of({{11, 12.2, 12.7}, {13 - 0.01, 12.2, 12.7}}, {1.0, 1.0}), box, params, fcm_params(100));
   for (int s = 0; s < 8; ++s) {

@@ -40,7 +40,7 @@ TEST(CouplingSimulation, OverlappingPairSeparatesAtTheExactRate) {
   params.flow.shear_rate = 0.0;
   FcmSimulation sim(st, box, params, fcm_params());
   sim.evaluate();
-  const double f = std::get<ComposedLaw<SoftRepulsion>>(params.contact).contact.p.kn * overlap;
+  const double f = std::get<ComposedLaw<ContactModel<SoftRepulsion>>>(params.contact).contact.normal.p.kn * overlap;
   // Exact X11A and X12A at s' = 2.001 (xi = 1e-3, the inner cutoff h_in = 1e-3 a).
   const double x11a = 252.549849, x12a = -251.904583;
   const Particles& p = sim.state().particles;
@@ -171,7 +171,7 @@ TEST(CouplingSimulation, ImplicitContactsRelaxAnOverlapAsBackwardEulerWithTheExa
   const double lambda = 2.0 * k / (6.0 * pi * (x11a - x12a));
   SimulationParams params;
   params.flow.shear_rate = 0.0;
-  params.contact = ComposedLaw<SoftRepulsion>{SoftRepulsion{{k}}, {}};
+  params.contact = ComposedLaw<ContactModel<SoftRepulsion>>{{SoftRepulsion{{k}}}, {}};
   params.time_step.implicit_contacts = true;
   params.time_step.mode = TimeStepParams::Mode::fixed;
   params.time_step.fixed = 5.0 / lambda;
