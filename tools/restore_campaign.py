@@ -19,12 +19,20 @@ def write_atomically(path, text):
     os.replace(tmp, path)
 
 
+def usage_error(message):
+    print(message, file=sys.stderr)
+    sys.exit(2)
+
+
 def main():
-    if len(sys.argv) != 3:
-        sys.exit(__doc__.strip().splitlines()[-1].strip())
+    if len(sys.argv) != 3 or sys.argv[1] in ("-h", "--help"):
+        usage_error(__doc__.strip().splitlines()[-1].strip())
     table, out = sys.argv[1], sys.argv[2]
-    with open(table) as f:
-        points = json.load(f)["points"]
+    try:
+        with open(table) as f:
+            points = json.load(f)["points"]
+    except (OSError, ValueError, KeyError, TypeError) as e:
+        usage_error(f"error: {table}: not a readable campaign table ({e})")
     restored = kept = 0
     for p in points:
         if p["status"] not in ("done", "jammed") or p.get("summary") is None:
