@@ -9,7 +9,7 @@
 #include <tuple>
 
 #include "core/error.hpp"
-#include "coupling/gmres.hpp"
+#include "linalg/gmres.hpp"
 
 namespace suspend::coupling {
 namespace {

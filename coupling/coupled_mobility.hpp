@@ -45,8 +45,8 @@
 #include <vector>
 
 #include "coupling/subgrid_lubrication.hpp"
-#include "dem/integrate/conjugate_gradient.hpp"
-#include "dem/integrate/sparse_cholesky.hpp"
+#include "linalg/conjugate_gradient.hpp"
+#include "linalg/sparse_cholesky.hpp"
 #include "fcm/solver.hpp"
 
 namespace suspend::coupling {

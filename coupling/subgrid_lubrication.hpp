@@ -28,7 +28,7 @@
 #include "coupling/exact_pair_resistance.hpp"
 #include "coupling/fcm_pair_resistance.hpp"
 #include "coupling/pair_tensors.hpp"
-#include "dem/integrate/block_matrix.hpp"
+#include "linalg/block_matrix.hpp"
 #include "dem/integrate/implicit_contacts.hpp"
 #include "dem/pair_forces.hpp"
 

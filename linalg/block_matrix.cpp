@@ -1,4 +1,4 @@
-#include "dem/integrate/block_matrix.hpp"
+#include "linalg/block_matrix.hpp"
 
 #include <algorithm>
 #include <string>

@@ -1,4 +1,4 @@
-#include "dem/integrate/conjugate_gradient.hpp"
+#include "linalg/conjugate_gradient.hpp"
 
 #include <Eigen/Cholesky>
 #include <algorithm>

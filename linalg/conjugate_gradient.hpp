@@ -18,7 +18,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "dem/integrate/block_matrix.hpp"
+#include "linalg/block_matrix.hpp"
 
 namespace suspend {
 

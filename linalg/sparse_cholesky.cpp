@@ -1,4 +1,4 @@
-#include "dem/integrate/sparse_cholesky.hpp"
+#include "linalg/sparse_cholesky.hpp"
 
 #include <algorithm>
 

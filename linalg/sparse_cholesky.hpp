@@ -8,7 +8,7 @@
 #include <Eigen/SparseCholesky>
 #include <vector>
 
-#include "dem/integrate/block_matrix.hpp"
+#include "linalg/block_matrix.hpp"
 
 namespace suspend {
 

@@ -49,7 +49,7 @@ template <class Contact>
 struct ComposedLaw {
   Contact contact;  // every species pair without its own parameters
   SurfaceForces surface;
-  SpeciesPairTable<Contact> pairs;
+  SpeciesPairTable<Contact> pairs{};
 
   // Gives the species pair (s_i, s_j) its own parameters; the others keep `contact`.
   void set_pair(int s_i, int s_j, const Contact& c, int species) {

@@ -39,10 +39,10 @@
 #include "core/stress.hpp"
 #include "dem/hydro/ambient_flow.hpp"
 #include "dem/hydro/lubrication.hpp"
-#include "dem/integrate/block_matrix.hpp"
-#include "dem/integrate/conjugate_gradient.hpp"
+#include "linalg/block_matrix.hpp"
+#include "linalg/conjugate_gradient.hpp"
 #include "dem/integrate/implicit_contacts.hpp"
-#include "dem/integrate/sparse_cholesky.hpp"
+#include "linalg/sparse_cholesky.hpp"
 #include "dem/pair_forces.hpp"
 
 namespace suspend {

@@ -2,7 +2,7 @@
 // (n iterations at most for an n x n system, exact arithmetic; Saad & Schultz 1986).
 #include <gtest/gtest.h>
 
-#include "coupling/gmres.hpp"
+#include "linalg/gmres.hpp"
 
 using namespace suspend::coupling;
 
