@@ -1,4 +1,4 @@
-// One coupled FCM step (FcmSimulation: contacts + sub-grid lubrication + FCM/GMRES velocity solve) at phi = 0.45,
+// One coupled FCM step (fcm_simulation: contacts + sub-grid lubrication + FCM/GMRES velocity solve) at phi = 0.45,
 // 440 monodisperse spheres (a = 1) in a (16 a)^3 box, h = a/2 (32^3 grid), truncation 4 widths, soft-repulsion
 // contacts, simple shear, adaptive time step, warm-started GMRES. After `warmup` steps, `steps` steps are timed
 // and split into contacts, sub-grid work (assembly + applications), the near-field preconditioner (sparse
@@ -23,7 +23,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "coupling/fcm_simulation.hpp"
+#include "coupling/fcm_model.hpp"
 #include "dem/packing.hpp"
 #include "fcm/fft.hpp"
 
@@ -53,13 +53,13 @@ int main(int argc, char** argv) {
   const bool cholesky = argc > 5 && std::string(argv[5]) == "cholesky";
   if (argc > 6) fcm.preconditioner_cutoff = std::atof(argv[6]);
   double t0 = omp_get_wtime();
-  FcmSimulation sim(state, box, params, fcm);
+  Simulation sim = fcm_simulation(state, box, params, fcm);
   {
-    coupling::KrylovParams k = sim.mobility().params();
+    coupling::KrylovParams k = fcm_model(sim).mobility().params();
     if (cholesky) k.near_field = coupling::KrylovParams::NearField::cholesky;
     if (argc > 7) k.inner_max_iterations = std::atoi(argv[7]);
     if (argc > 8) k.inner_tolerance = std::atof(argv[8]);
-    sim.mobility().set_params(k);
+    fcm_model(sim).mobility().set_params(k);
   }
   std::printf("setup (pair table from cache or computed): %.2f s; phi = %.4f, N = %zu, threads = %d\n",
               omp_get_wtime() - t0, packing.report.phi, radius.size(), omp_get_max_threads());
@@ -67,10 +67,10 @@ int main(int argc, char** argv) {
     sim.evaluate();
     sim.advance();
   }
-  const double contacts0 = sim.contact_seconds(), assembly0 = sim.subgrid_assembly_seconds();
-  const long inner0 = sim.mobility().inner_iterations();
-  sim.mobility().reset_timings();
-  sim.mobility().solver().reset_timings();
+  const double contacts0 = sim.contact_seconds(), assembly0 = fcm_model(sim).subgrid_assembly_seconds();
+  const long inner0 = fcm_model(sim).mobility().inner_iterations();
+  fcm_model(sim).mobility().reset_timings();
+  fcm_model(sim).mobility().solver().reset_timings();
   long iterations = 0, solves = 0;
   std::size_t pairs = 0, contacts = 0;
   // Bare FFT Stokes solve: 3 forward + 3 inverse r2c transforms of the same grid, timed between the steps so that
@@ -92,16 +92,16 @@ int main(int argc, char** argv) {
     SUSPEND_CALLGRIND_TOGGLE();
     total_time += omp_get_wtime() - t0;
     iterations += sim.solver_iterations();
-    solves += sim.stokes_solves();
-    pairs += sim.corrected_pairs();
+    solves += fcm_model(sim).stokes_solves();
+    pairs += fcm_model(sim).corrected_pairs();
     contacts += sim.contact_count();
   }
   const double total = total_time / steps;
   const double bare = bare_total / (reps * steps);
-  const auto& tm = sim.mobility().timings();
-  const auto& ft = sim.mobility().solver().timings();
+  const auto& tm = fcm_model(sim).mobility().timings();
+  const auto& ft = fcm_model(sim).mobility().solver().timings();
   const double contact = (sim.contact_seconds() - contacts0) / steps;
-  const double subgrid = (tm.subgrid + sim.subgrid_assembly_seconds() - assembly0) / steps;
+  const double subgrid = (tm.subgrid + fcm_model(sim).subgrid_assembly_seconds() - assembly0) / steps;
   const double precond = tm.preconditioner / steps;
   const double stokes = tm.stokes / steps;
 
@@ -111,15 +111,15 @@ int main(int argc, char** argv) {
               double(iterations) / steps, double(solves) / steps, double(pairs) / steps, double(contacts) / steps);
   std::printf("  footprint plans %.1f\n", double(ft.plans) / steps);
   std::printf("  near field: %s, inner CG iterations %.1f per step, Cholesky analyses %d, failures %d\n",
-              cholesky ? "cholesky" : "block-SGS CG", double(sim.mobility().inner_iterations() - inner0) / steps,
-              sim.mobility().preconditioner_analyses(), sim.mobility().preconditioner_failures());
+              cholesky ? "cholesky" : "block-SGS CG", double(fcm_model(sim).mobility().inner_iterations() - inner0) / steps,
+              fcm_model(sim).mobility().preconditioner_analyses(), fcm_model(sim).mobility().preconditioner_failures());
   std::printf("  bare FFT Stokes solve (32^3): %.3f ms\n", 1e3 * bare);
   std::printf("  %-28s %9s %9s\n", "stage", "ms", "/ bare FFT");
   auto row = [&](const char* name, double t) { std::printf("  %-28s %9.2f %9.1f\n", name, 1e3 * t, t / bare); };
   row("total step", total);
   row("contacts", contact);
   row("sub-grid (assembly+apply)", subgrid);
-  row("  of which assembly", (sim.subgrid_assembly_seconds() - assembly0) / steps);
+  row("  of which assembly", (fcm_model(sim).subgrid_assembly_seconds() - assembly0) / steps);
   row("near-field preconditioner", precond);
   row("FCM Stokes solves", stokes);
   row("  of which plan (footprints)", ft.plan / steps);

@@ -117,7 +117,7 @@ int step(const std::string& file, int steps, const std::string& integrator, cons
   }
 
   const auto t0 = std::chrono::steady_clock::now();
-  PairwiseSimulation sim(std::move(state), box, params);
+  Simulation sim(std::move(state), box, params);
   for (int s = 0; s < steps; ++s) {
     sim.evaluate();
     sim.advance();

@@ -1,4 +1,4 @@
-// The contact stage of a step, shared by both engines (PairwiseSimulation, coupling::FcmSimulation): neighbour list
+// The contact stage of a step, shared by every hydrodynamic model (Simulation): neighbour list
 // (rebuilt on its skin criterion), the pairs within the interaction range with their Lees-Edwards geometry, their
 // contact histories, the contact and surface forces of the shared contact module, the overlap check, and after the
 // move the histories stored back (DESIGN.md section 2, run-time flow).

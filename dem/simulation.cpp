@@ -1,13 +1,15 @@
 #include "dem/simulation.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
 
-#include "core/capacity.hpp"
 #include "core/error.hpp"
 #include "dem/hydro/stokes_drag.hpp"
+#include "dem/integrate/pairwise_models.hpp"
 
 namespace suspend {
 
@@ -32,52 +34,33 @@ void SimulationParams::validate() const {
     throw InputError("run.time_step.contacts = implicit needs run.integrator = overdamped");
 }
 
-PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, const SimulationParams& params)
+Simulation::Simulation(SimulationState state, const Box& box, const SimulationParams& params)
+    : Simulation(std::move(state), box, params, nullptr) {}
+
+Simulation::Simulation(SimulationState state, const Box& box, const SimulationParams& params,
+                       std::unique_ptr<HydrodynamicModel> model)
     : state_(std::move(state)), box_(box), params_(params),
-      contacts_(std::max(interaction_range(params.contact),
-                         params.lubrication ? params.resistance.lubrication.outer_cutoff : 0.0),
-                params.skin, state_.particles, state_.contacts) {
+      model_(model ? std::move(model) : make_pairwise_model(state_.particles, params)),
+      contacts_(std::max(interaction_range(params.contact), model_->pair_range()), params.skin, state_.particles,
+                state_.contacts) {
   params_.validate();
-  if (params_.time_step.implicit_contacts && !params_.lubrication)
-    throw InputError("run.time_step.contacts = implicit needs the resistance solve: hydrodynamics.lubrication.enabled "
-                     "= true (or hydrodynamics.model = fcm)");
+  const bool inertial = params_.integrator == Integrator::inertial;
+  if (model_->inertial() != inertial)
+    throw InputError(inertial ? "run.integrator = inertial: this hydrodynamic model is overdamped only"
+                              : "this hydrodynamic model needs run.integrator = inertial");
   box_.set_strain(state_.strain);
   const Particles& p = state_.particles;
   const std::size_t n = p.size();
   a_min_ = *std::min_element(p.radius.begin(), p.radius.end());
-  for (double a : p.radius) radius_cubed_ += a * a * a;
   state_.contacts.clear();
   if (params_.flow.control == FlowControl::rate || state_.shear_rate == 0.0)
     state_.shear_rate = params_.flow.control == FlowControl::rate
                             ? params_.flow.rate(state_.time, state_.accumulated_strain)
                             : params_.flow.shear_rate;
   rate_ = state_.shear_rate;
-  if (params_.flow.control == FlowControl::stress) zero_.assign(n, Vec3::Zero());  // the force-free problem's input
-  // Lubrication is tabulated per pair of distinct radii.
-  species_radius_ = p.radius;
-  std::sort(species_radius_.begin(), species_radius_.end());
-  species_radius_.erase(std::unique(species_radius_.begin(), species_radius_.end()), species_radius_.end());
-  species_.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    species_[i] = static_cast<int>(std::lower_bound(species_radius_.begin(), species_radius_.end(), p.radius[i]) -
-                                   species_radius_.begin());
-  if (params_.lubrication && params_.integrator == Integrator::inertial) {
-    // Explicit forces (paper 000 eq. 15): no resistance matrix, no warm start.
-    explicit_.emplace(species_radius_, params_.resistance.lubrication, params_.resistance.lubrication_stress);
-    state_.warm_start.clear();
-  } else if (params_.lubrication) {
-    solver_.emplace(species_radius_, params_.resistance);
-    if (params_.flow.control == FlowControl::stress) force_solver_.emplace(species_radius_, params_.resistance);
-    const std::size_t w = state_.warm_start.size();
-    auto restore = [&](ResistanceSolver& s, std::size_t from) {
-      s.set_warm_start(Eigen::Map<const Eigen::VectorXd>(state_.warm_start.data() + from,
-                                                         static_cast<Eigen::Index>(6 * n)));
-    };
-    if (w >= 6 * n) restore(*solver_, 0);
-    if (force_solver_ && w == 12 * n) restore(*force_solver_, 6 * n);
-    state_.warm_start.clear();
-  }
-  if (params_.integrator == Integrator::inertial) {
+  model_->set_warm_start_state(state_.warm_start, n, params_.flow.control == FlowControl::stress);
+  state_.warm_start.clear();
+  if (inertial) {
     mass_.resize(n);
     moment_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -100,85 +83,60 @@ PairwiseSimulation::PairwiseSimulation(SimulationState state, const Box& box, co
   }
 }
 
-SimulationState PairwiseSimulation::state_with_contacts() const {
+SimulationState Simulation::state_with_contacts() const {
   SimulationState s = state_;
   s.contacts = contacts_.histories();
-  if (solver_) {
-    const Eigen::VectorXd& dv = solver_->disturbance();
-    s.warm_start.assign(dv.data(), dv.data() + dv.size());
-    if (force_solver_ && force_solver_->disturbance().size() == dv.size()) {
-      const Eigen::VectorXd& dc = force_solver_->disturbance();
-      s.warm_start.insert(s.warm_start.end(), dc.data(), dc.data() + dc.size());
-    }
-  }
+  s.warm_start = model_->warm_start_state();
   return s;
 }
 
-void PairwiseSimulation::fail(const std::string& what) const {
+void Simulation::fail(const std::string& what) const {
   std::ostringstream s;
   s << "numerical failure at step " << state_.step << ", strain " << state_.strain << ": " << what;
   throw NumericalError(s.str());
 }
 
-void PairwiseSimulation::contact_forces(double image_velocity) {
-  Particles& p = state_.particles;
-  if (const auto overlap = contacts_.evaluate(p, box_, image_velocity, params_.contact, state_.last_dt,
-                                               params_.time_step.implicit_contacts, params_.max_overlap * a_min_))
-    fail(*overlap);
-}
-
-double PairwiseSimulation::overdamped_velocities() {
-  Particles& p = state_.particles;
-  const std::size_t n = p.size();
-  const double volume = box_.volume();
+HydroLoad Simulation::load(const ImplicitContacts& implicit) const {
   std::ostringstream where;
   where << "step " << state_.step << ", strain " << state_.strain;
-  ImplicitContacts implicit;
-  if (params_.time_step.implicit_contacts) implicit = {&contacts_.stiffness(), dt_};
   const PairSums& sums = contacts_.sums();
-  const std::vector<ActivePair>& pairs = contacts_.pairs();
-  if (solver_ && params_.flow.control == FlowControl::rate) {
-    solver_->solve(p, species_, pairs, flow(rate_), sums.force, sums.torque, solve_, where.str(), implicit);
-  } else if (solver_) {
-    // Rate-driven problem at unit rate and force-driven problem at zero rate; velocities, stress and the implicit
-    // contact changes are linear in both.
-    solver_->solve(p, species_, pairs, flow(1.0), zero_, zero_, solve_, where.str(), implicit);
-    force_solver_->solve(p, species_, pairs, flow(0.0), sums.force, sums.torque, force_solve_, where.str(),
-                         implicit);
-    const double sigma_h = 1.0 + solve_.stress.total()(0, 1) / volume;
-    const double sigma_c = (sums.virial.total()(0, 1) + force_solve_.stress.total()(0, 1)) / volume;
+  // A model that keeps anything per rate (the FCM lagged far field) must know when the imposed rate changed.
+  const bool rate_changed = params_.flow.control == FlowControl::rate && rate_ != state_.shear_rate;
+  return {state_.particles, contacts_.pairs(), sums.force, sums.torque, box_, implicit, state_.step, rate_changed,
+          where.str()};
+}
+
+double Simulation::overdamped_velocities(const HydroLoad& load) {
+  Particles& p = state_.particles;
+  const std::size_t n = p.size();
+  const HydroResponse* response = nullptr;
+  if (params_.flow.control == FlowControl::rate) {
+    response = &model_->solve(load, rate_);
+  } else {
+    // Sigma_xy = gammadot Sigma_H + Sigma_C from the unit-rate and the force-driven parts; the rate that meets the
+    // target combines them.
+    auto [shear, forced] = model_->solve_parts(load);
+    const double volume = box_.volume();
+    const double sigma_h = 1.0 + shear.stress.total()(0, 1) / volume;
+    const double sigma_c = (contacts_.sums().virial.total()(0, 1) + forced.stress.total()(0, 1)) / volume;
     rate_ = (params_.flow.stress(state_.time, state_.accumulated_strain) - sigma_c) / sigma_h;
-    for (std::size_t i = 0; i < n; ++i) {
-      solve_.velocity[i] = rate_ * solve_.velocity[i] + force_solve_.velocity[i];
-      solve_.angular_velocity[i] = rate_ * solve_.angular_velocity[i] + force_solve_.angular_velocity[i];
-    }
-    for (std::size_t c = 0; c < contribution_count; ++c)
-      solve_.stress.part[c] = rate_ * solve_.stress.part[c] + force_solve_.stress.part[c];
-    for (std::size_t k = 0; k < solve_.contact_change_on_j.size(); ++k)
-      solve_.contact_change_on_j[k] = rate_ * solve_.contact_change_on_j[k] + force_solve_.contact_change_on_j[k];
-  } else if (params_.flow.control == FlowControl::stress) {
-    // Drag only: the hydrodynamic stress is 2 E_inf + the Stokes stresslets, the rest is the contacts'.
-    const double sigma_h = 1.0 + (10.0 / 3.0) * pi * radius_cubed_ / volume;
-    rate_ = (params_.flow.stress(state_.time, state_.accumulated_strain) - sums.virial.total()(0, 1) / volume) /
-            sigma_h;
+    shear.combine(rate_, forced);
+    response = &shear;
   }
+  iterations_ = response->iterations;
+  residual_ = response->residual;
   double max_speed = 0.0;
   const hydro::WavyShear f = flow(rate_);
   for (std::size_t i = 0; i < n; ++i) {
-    const double a = p.radius[i];
-    if (solver_) {
-      p.velocity[i] = solve_.velocity[i];
-      p.angular_velocity[i] = solve_.angular_velocity[i];
-    } else {
-      p.velocity[i] = hydro::faxen_velocity(a, p.position[i], f) + sums.force[i] / (6.0 * pi * a);
-      p.angular_velocity[i] = f.angular_velocity(p.position[i]) + sums.torque[i] / (8.0 * pi * a * a * a);
-    }
+    p.velocity[i] = response->velocity[i];
+    p.angular_velocity[i] = response->angular_velocity[i];
     max_speed = std::max(max_speed, (p.velocity[i] - f.velocity(p.position[i])).norm());
   }
+  finish_stress(response->stress, response->contact_change_on_j);
   return max_speed;
 }
 
-double PairwiseSimulation::inertial_velocities() {
+double Simulation::inertial_velocities(const HydroLoad& load) {
   Particles& p = state_.particles;
   const std::size_t n = p.size();
   const hydro::WavyShear f = flow(rate_);
@@ -190,58 +148,59 @@ double PairwiseSimulation::inertial_velocities() {
       disturbance_[6 * i + k] = v[12 * i + k] - f.velocity(p.position[i])[k];
       disturbance_[6 * i + 3 + k] = v[12 * i + 3 + k] - f.angular_velocity(p.position[i])[k];
     }
-  if (explicit_) {
-    explicit_->evaluate(p, species_, contacts_.pairs(), f, disturbance_, mass_, moment_, explicit_out_);
-    relaxation_rate_ = explicit_out_.relaxation_rate;
-    solve_.stress = explicit_out_.stress;
-    solve_.iterations = 0;
-  } else {
-    hydro_force_.resize(6 * static_cast<Eigen::Index>(n));
-    relaxation_rate_ = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double a = p.radius[i];
-      const hydro::StokesResistance r = hydro::stokes_resistance(a);
-      const Vec3 du = disturbance_.segment<3>(6 * i) - (a * a / 6.0) * f.velocity_laplacian(p.position[i]);
-      hydro_force_.segment<3>(6 * i) = -r.translation * du;
-      hydro_force_.segment<3>(6 * i + 3) = -r.rotation * disturbance_.segment<3>(6 * i + 3);
-      relaxation_rate_ = std::max({relaxation_rate_, r.translation / mass_[i], r.rotation / moment_[i]});
-    }
-  }
-  const Eigen::VectorXd& hydro_force = explicit_ ? explicit_out_.force : hydro_force_;
+  const ExplicitResponse& hydro = model_->explicit_forces(load, rate_, disturbance_, mass_, moment_);
+  relaxation_rate_ = hydro.relaxation_rate;
+  iterations_ = 0;
+  residual_ = 0.0;
   acceleration_.resize(6 * n);
   double max_speed = 0.0;
   const double half = 0.5 * state_.last_dt;
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 a_lin = (contacts_.sums().force[i] + hydro_force.segment<3>(6 * i)) / mass_[i];
-    const Vec3 a_ang = (contacts_.sums().torque[i] + hydro_force.segment<3>(6 * i + 3)) / moment_[i];
+    const Vec3 a_lin = (contacts_.sums().force[i] + hydro.force.segment<3>(6 * i)) / mass_[i];
+    const Vec3 a_ang = (contacts_.sums().torque[i] + hydro.force.segment<3>(6 * i + 3)) / moment_[i];
     for (int k = 0; k < 3; ++k) acceleration_[6 * i + k] = a_lin[k], acceleration_[6 * i + 3 + k] = a_ang[k];
-    p.velocity[i] = Vec3(v[12 * i], v[12 * i + 1], v[12 * i + 2]) + half * a_lin;          // eq. 15d
+    p.velocity[i] = Vec3(v[12 * i], v[12 * i + 1], v[12 * i + 2]) + half * a_lin;  // eq. 15d
     p.angular_velocity[i] = Vec3(v[12 * i + 3], v[12 * i + 4], v[12 * i + 5]) + half * a_ang;
     max_speed = std::max(max_speed, (p.velocity[i] - f.velocity(p.position[i])).norm());
   }
+  finish_stress(hydro.stress, {});
   return max_speed;
 }
 
-void PairwiseSimulation::finish_stress(double rate) {
-  const Particles& p = state_.particles;
+void Simulation::finish_stress(const StressTensors& hydrodynamic, const std::vector<Vec3>& contact_change_on_j) {
+  // Contact virial + the model's sums (hydrodynamic, lubrication; with implicit contacts the contacts' change over
+  // the step, whose forces also go to the contact records).
   stress_ = contacts_.sums().virial;
-  if (params_.lubrication) {
-    // Hydrodynamic and lubrication sums; with implicit contacts also the contacts' change over the step.
-    for (std::size_t c = 0; c < contribution_count; ++c) stress_.part[c] += solve_.stress.part[c];
-    for (std::size_t k = 0; k < solve_.contact_change_on_j.size(); ++k)
-      contacts_.add_contact_change(k, solve_.contact_change_on_j[k]);
-  } else {
-    const hydro::WavyShear f = flow(rate);
-    Mat3& h = stress_[Contribution::hydrodynamic];
-    for (std::size_t i = 0; i < p.size(); ++i) h += hydro::stokes_stresslet(p.radius[i], p.position[i], f);
-  }
+  for (std::size_t c = 0; c < contribution_count; ++c) stress_.part[c] += hydrodynamic.part[c];
+  for (std::size_t k = 0; k < contact_change_on_j.size(); ++k)
+    contacts_.add_contact_change(k, contact_change_on_j[k]);
   for (auto& m : stress_.part) m /= box_.volume();
   // The fluid's 2 eta <E_inf>: the wave averages to zero over whole periods.
-  stress_[Contribution::hydrodynamic](0, 1) += rate;
-  stress_[Contribution::hydrodynamic](1, 0) += rate;
+  stress_[Contribution::hydrodynamic](0, 1) += rate_;
+  stress_[Contribution::hydrodynamic](1, 0) += rate_;
 }
 
-void PairwiseSimulation::evaluate() {
+double Simulation::next_time_step(double max_speed) const {
+  // Fixed, or bounded strain increment, non-affine displacement and the fastest contact or hydrodynamic time
+  // scale (overdamped: drag relaxation 6 pi a / k; inertial: sqrt(m / k) and m / R).
+  const TimeStepParams& ts = params_.time_step;
+  double dt = dt_;
+  if (ts.mode == TimeStepParams::Mode::fixed) {
+    dt = ts.fixed;
+  } else if (params_.integrator == Integrator::inertial) {
+    const double k = stiffness_scale(params_.contact);
+    dt = std::abs(rate_) > 0.0 ? ts.max / std::abs(rate_) : ts.max;
+    if (max_speed > 0.0) dt = std::min(dt, ts.max_displacement / max_speed);
+    const double m_min = *std::min_element(mass_.begin(), mass_.end());
+    dt = std::min(dt, ts.stability * std::sqrt(m_min / k));
+    if (relaxation_rate_ > 0.0) dt = std::min(dt, ts.stability / relaxation_rate_);
+  } else if (!ts.implicit_contacts) {
+    dt = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt);
+  }
+  return std::min(dt, params_.flow.max_time_step());
+}
+
+void Simulation::evaluate() {
   Particles& p = state_.particles;
   const std::size_t n = p.size();
   const bool inertial = params_.integrator == Integrator::inertial;
@@ -251,19 +210,30 @@ void PairwiseSimulation::evaluate() {
       p.velocity[i] = Vec3(v[0], v[1], v[2]);
       p.angular_velocity[i] = Vec3(v[3], v[4], v[5]);
     }
-  // Contacts see the image velocity of the last step's rate (their velocities are that step's).
-  contact_forces(state_.shear_rate * box_.length().y());
-  // Implicit contacts: the step precedes the solve (time_step_control.hpp), from the last step's speeds and this
-  // step's contacts.
+  // 1. Contacts, with the image velocity of the last step's rate (their velocities are that step's).
+  const double t0 = omp_get_wtime();
+  const auto overlap = contacts_.evaluate(p, box_, state_.shear_rate * box_.length().y(), params_.contact,
+                                          state_.last_dt, params_.time_step.implicit_contacts,
+                                          params_.max_overlap * a_min_);
+  contact_seconds_ += omp_get_wtime() - t0;
+  if (overlap) fail(*overlap);
+  // 2. Implicit contacts: the step precedes the solve (time_step_control.hpp), from the last step's speeds and
+  // this step's contacts.
+  ImplicitContacts implicit;
   if (params_.time_step.implicit_contacts) {
     dt_ = overdamped_time_step(params_.time_step, params_.contact, state_.shear_rate,
                                max_nonaffine_speed(p, flow(state_.shear_rate)), a_min_, state_.last_dt,
                                contacts_.sums().mean_compliance());
     dt_ = std::min(dt_, params_.flow.max_time_step());
+    implicit = {&contacts_.stiffness(), dt_};
   }
+  // 3-4. Hydrodynamics and flow control (imposed rate now; imposed stress inside, from the model's two parts),
+  // then the stress.
   rate_ = params_.flow.control == FlowControl::rate ? params_.flow.rate(state_.time, state_.accumulated_strain)
                                                     : state_.shear_rate;
-  const double max_speed = inertial ? inertial_velocities() : overdamped_velocities();
+  const HydroLoad l = load(implicit);
+  const double max_speed = inertial ? inertial_velocities(l) : overdamped_velocities(l);
+  // 5. Checks.
   if (!std::isfinite(rate_)) fail("the stress control gave a non-finite shear rate");
   for (std::size_t i = 0; i < n; ++i)
     if (!p.velocity[i].allFinite() || !p.angular_velocity[i].allFinite()) {
@@ -272,28 +242,12 @@ void PairwiseSimulation::evaluate() {
         << ")";
       fail(s.str());
     }
-  finish_stress(rate_);
-
-  // Time step: fixed, or bounded strain increment, non-affine displacement and the fastest contact or
-  // hydrodynamic time scale (overdamped: drag relaxation 6 pi a / k; inertial: sqrt(m / k) and m / R).
-  const TimeStepParams& ts = params_.time_step;
-  if (ts.mode == TimeStepParams::Mode::fixed) {
-    dt_ = ts.fixed;
-  } else if (inertial) {
-    const double k = stiffness_scale(params_.contact);
-    dt_ = std::abs(rate_) > 0.0 ? ts.max / std::abs(rate_) : ts.max;
-    if (max_speed > 0.0) dt_ = std::min(dt_, ts.max_displacement / max_speed);
-    const double m_min = *std::min_element(mass_.begin(), mass_.end());
-    dt_ = std::min(dt_, ts.stability * std::sqrt(m_min / k));
-    if (relaxation_rate_ > 0.0) dt_ = std::min(dt_, ts.stability / relaxation_rate_);
-  } else if (!ts.implicit_contacts) {
-    dt_ = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt);
-  }
-  dt_ = std::min(dt_, params_.flow.max_time_step());
+  // 6. Time step.
+  dt_ = next_time_step(max_speed);
   evaluated_ = true;
 }
 
-void PairwiseSimulation::advance() {
+void Simulation::advance() {
   if (!evaluated_) evaluate();
   contacts_.store_histories();
   Particles& p = state_.particles;

@@ -10,6 +10,7 @@
 #include <optional>
 #include <sstream>
 
+#include "dem/integrate/pairwise_models.hpp"
 #include "dem/integrate/time_step_control.hpp"
 #include "io/contact_case.hpp"
 #include "io/schema_reader.hpp"
@@ -303,20 +304,11 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     r.finish();
   }
   top.finish();
-  c.simulation.validate();
-  if (c.hydrodynamics == "pairwise" && c.simulation.time_step.implicit_contacts && !c.simulation.lubrication)
-    throw InputError("run.time_step.contacts = implicit needs hydrodynamics.lubrication.enabled = true (the "
-                     "resistance solve) or hydrodynamics.model = fcm");
-  if (c.hydrodynamics == "fcm") {
-    if (c.simulation.time_step.implicit_contacts && !c.fcm.subgrid)
-      throw InputError("run.time_step.contacts = implicit needs hydrodynamics.fcm.subgrid = true");
-    if (c.flow == "wavy")
-      throw InputError("flow.type = wavy is not available with hydrodynamics.model = fcm (use simple_shear, "
-                       "oscillatory or reversal)");
-    if (c.simulation.integrator != Integrator::overdamped)
-      throw InputError("run.integrator = inertial is not available with hydrodynamics.model = fcm (use overdamped)");
-    c.fcm.validate();
-  }
+  // The rules of the hydrodynamic model, where the model states them.
+  if (c.hydrodynamics == "fcm")
+    FcmModel::check(c.simulation, c.fcm);
+  else
+    check_pairwise_model(c.simulation);
   refuse_runs_without_progress(c);
   return c;
 }

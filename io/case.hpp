@@ -10,7 +10,7 @@
 
 #include "core/vec.hpp"
 #include "dem/packing.hpp"
-#include "coupling/fcm_simulation.hpp"
+#include "coupling/fcm_model.hpp"
 #include "dem/simulation.hpp"
 
 namespace suspend::io {

@@ -63,8 +63,7 @@ void check_finite(const SimulationState& st) {
     }
 }
 
-template <class Sim>
-Snapshot snapshot_of(const Sim& sim) {
+Snapshot snapshot_of(const Simulation& sim) {
   Snapshot s;
   const SimulationState& st = sim.state();
   s.step = st.step;
@@ -187,7 +186,7 @@ int run_case(const Case& c, const RunOptions& o) {
   if (progress_strain(flow, state) >= c.run.strain)
     throw InputError("run.strain = " + exact(c.run.strain) + " is already reached by the checkpoint (strain " +
                      exact(progress_strain(flow, state)) + "); raise it with --set run.strain=...");
-  auto run = [&](auto& sim) -> int {
+  auto run = [&](Simulation& sim) -> int {
 
     {
       std::error_code ec;
@@ -238,8 +237,8 @@ int run_case(const Case& c, const RunOptions& o) {
       summary["git_commit"] = std::string(suspend::git_commit);
       summary["threads"] = threads;
       summary["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-      if constexpr (requires { sim.total_stokes_solves(); }) {
-        const auto steps = sim.evaluated_steps(), solves = sim.total_stokes_solves();
+      if (const auto* fcm = dynamic_cast<const FcmModel*>(&sim.model())) {
+        const auto steps = fcm->evaluated_steps(), solves = fcm->total_stokes_solves();
         summary["fcm"] = {{"steps", steps}, {"stokes_solves", solves},
                           {"stokes_solves_per_step", steps > 0 ? static_cast<double>(solves) / steps : 0.0}};
       }
@@ -452,11 +451,8 @@ int run_case(const Case& c, const RunOptions& o) {
                 summary["samples"].get<std::size_t>());
     return 0;
   };
-  if (c.hydrodynamics == "fcm") {
-    FcmSimulation sim(std::move(state), box, c.simulation, c.fcm);
-    return run(sim);
-  }
-  PairwiseSimulation sim(std::move(state), box, c.simulation);
+  Simulation sim = c.hydrodynamics == "fcm" ? fcm_simulation(std::move(state), box, c.simulation, c.fcm)
+                                             : Simulation(std::move(state), box, c.simulation);
   return run(sim);
 }
 

@@ -12,6 +12,7 @@
 #include <variant>
 
 #include "core/error.hpp"
+#include "core/flow.hpp"
 #include "core/vec.hpp"
 
 namespace suspend::hydro {
@@ -59,5 +60,10 @@ struct WavyShear {
 struct SimpleShear : WavyShear {
   explicit SimpleShear(double gammadot = 1.0) : WavyShear{gammadot, 0.0, 0, 1.0} {}
 };
+
+// The imposed flow of a run (core/flow.hpp: its shape) at shear rate `rate` in a box of height L_y.
+inline WavyShear ambient_flow(const Flow& flow, double rate, double box_height) {
+  return {rate, flow.wave_amplitude, flow.wave_periods, box_height};
+}
 
 }  // namespace suspend::hydro

@@ -40,10 +40,9 @@
 
 namespace suspend {
 
-struct ExplicitHydroResult {
-  Eigen::VectorXd force;             // 6 per particle: hydrodynamic force, then torque
-  StressTensors stress;              // hydrodynamic and lubrication sums; other parts zero
-  double relaxation_rate = 0.0;      // Gershgorin bound on the fastest rate of M^-1 R
+// Force and torque (6 per particle), hydrodynamic and lubrication stress sums, and the Gershgorin bound on the
+// fastest rate of M^-1 R (dem/hydrodynamic_model.hpp), plus the pair count.
+struct ExplicitHydroResult : ExplicitResponse {
   std::size_t lubricated_pairs = 0;  // pairs within the outer cutoff
 };
 

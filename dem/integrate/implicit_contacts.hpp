@@ -15,6 +15,7 @@
 // semi-definite) and the generalised force -C^T (dt S) u_c,inf of the ambient flow's contact velocity.
 #pragma once
 #include <Eigen/Dense>
+#include <vector>
 
 #include "core/stress.hpp"
 #include "core/vec.hpp"
@@ -24,6 +25,14 @@
 #include "dem/pair_forces.hpp"
 
 namespace suspend {
+
+// Linearly implicit contacts (dem/integrate/implicit_contacts.hpp): the contact forces the caller passes are those
+// at the start of the step; the solve adds their change over dt, -dt S u_c, to the force balance.
+struct ImplicitContacts {
+  const std::vector<ContactStiffness>* stiffness = nullptr;  // per pair of the list; null: explicit contacts
+  double dt = 0.0;
+  bool enabled() const { return stiffness != nullptr; }
+};
 
 using ContactOperator = Eigen::Matrix<double, 3, 12>;
 

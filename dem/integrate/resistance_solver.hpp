@@ -43,6 +43,7 @@
 #include "linalg/conjugate_gradient.hpp"
 #include "dem/integrate/implicit_contacts.hpp"
 #include "linalg/sparse_cholesky.hpp"
+#include "dem/hydrodynamic_model.hpp"
 #include "dem/pair_forces.hpp"
 
 namespace suspend {
@@ -62,24 +63,13 @@ struct ResistanceSolverParams {
   void validate() const;
 };
 
-// Linearly implicit contacts (dem/integrate/implicit_contacts.hpp): the contact forces the caller passes are those
-// at the start of the step; the solve adds their change over dt, -dt S u_c, to the force balance.
-struct ImplicitContacts {
-  const std::vector<ContactStiffness>* stiffness = nullptr;  // per pair of the list; null: explicit contacts
-  double dt = 0.0;
-  bool enabled() const { return stiffness != nullptr; }
-};
 
-struct SolveResult {
-  std::vector<Vec3> velocity, angular_velocity;  // lab frame, per particle
-  std::vector<Vec3> lubrication_force_on_j;      // per pair of the list given (zero beyond the outer cutoff)
-  std::vector<Vec3> contact_change_on_j;         // implicit contacts: -dt S u_c per pair (empty otherwise)
-  // Hydrodynamic and lubrication sums; with implicit contacts also the virial of contact_change_on_j in
-  // contact_normal and contact_tangential; other parts zero.
-  StressTensors stress;
-  int iterations = 0;                            // CG iterations (0 for Cholesky)
-  double residual = 0.0;                         // relative residual |b - R dV| / |b| of the returned solution
-  std::size_t lubricated_pairs = 0;              // pairs within the outer cutoff
+// Velocities, stress sums (hydrodynamic and lubrication; with implicit contacts also the virial of
+// contact_change_on_j in contact_normal and contact_tangential), CG iterations (0 for Cholesky) and the relative
+// residual |b - R dV| / |b| (dem/hydrodynamic_model.hpp), plus the pair forces.
+struct SolveResult : HydroResponse {
+  std::vector<Vec3> lubrication_force_on_j;  // per pair of the list given (zero beyond the outer cutoff)
+  std::size_t lubricated_pairs = 0;          // pairs within the outer cutoff
 };
 
 // A symmetric 6x6 block stored as its upper triangle, row by row. The self blocks of R_lub are exactly symmetric

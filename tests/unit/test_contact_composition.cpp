@@ -178,7 +178,7 @@ TEST(ContactSpeciesPairs, TheDriverUsesEachPairsOwnStiffness) {
   ComposedLaw<ContactModel<SoftRepulsion>> law{{SoftRepulsion{{k, 2.0 / 7.0 * k}}}, {}, {}};
   law.set_pair(0, 1, {SoftRepulsion{{k01, 2.0 / 7.0 * k01}}}, 2);
   params.contact = law;
-  PairwiseSimulation sim(st, Box(20, 20, 20), params);
+  Simulation sim(st, Box(20, 20, 20), params);
   sim.evaluate();
   EXPECT_NEAR(sim.state().particles.velocity[1].z(), k01 * overlap / (6.0 * M_PI), 1e-12);
   EXPECT_NEAR(stiffness_scale(params.contact), k01, 0.0);  // the explicit step resolves the stiffest pair

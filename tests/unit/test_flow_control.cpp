@@ -31,7 +31,7 @@ TEST(StressControl, DiluteSuspensionShearsAtTheTargetOverTheEinsteinViscosity) {
     params.lubrication = lubrication;
     params.flow.control = FlowControl::stress;
     params.flow.shear_stress = 3.0;
-    PairwiseSimulation sim(st, box, params);
+    Simulation sim(st, box, params);
     sim.evaluate();
     EXPECT_NEAR(sim.shear_rate(), 3.0 / (1.0 + 2.5 * phi), 1e-12) << "lubrication " << lubrication;
     EXPECT_NEAR(sim.stress().total()(0, 1), 3.0, 1e-12);
@@ -50,7 +50,7 @@ TEST(StressControl, HitsTheTargetWithContactsAndLubricationAndEqualsTheRateContr
   params.resistance.tolerance = 1e-12;
   auto st = cluster();
   st.strain = 0.3;
-  PairwiseSimulation stress(st, box, params);
+  Simulation stress(st, box, params);
   stress.evaluate();
   EXPECT_NEAR(stress.stress().total()(0, 1), 2.5, 1e-9);
   EXPECT_GT(stress.contact_count(), 0u);
@@ -58,7 +58,7 @@ TEST(StressControl, HitsTheTargetWithContactsAndLubricationAndEqualsTheRateContr
   params.flow.control = FlowControl::rate;
   params.flow.shear_rate = stress.shear_rate();
   st.shear_rate = stress.shear_rate();
-  PairwiseSimulation rate(st, box, params);
+  Simulation rate(st, box, params);
   rate.evaluate();
   EXPECT_NEAR(rate.stress().total()(0, 1), 2.5, 1e-9);
   for (std::size_t i = 0; i < st.particles.size(); ++i)
@@ -72,13 +72,13 @@ TEST(StressControl, CheckpointedStateContinuesBitForBit) {
   params.contact = ComposedLaw<ContactModel<SoftRepulsion>>{{SoftRepulsion{{1.0e3}}}, {}};
   params.flow.control = FlowControl::stress;
   params.flow.shear_stress = 2.0;
-  PairwiseSimulation whole(cluster(), box, params);
+  Simulation whole(cluster(), box, params);
   for (int s = 0; s < 6; ++s) whole.advance();
-  PairwiseSimulation first(cluster(), box, params);
+  Simulation first(cluster(), box, params);
   for (int s = 0; s < 3; ++s) first.advance();
   const SimulationState saved = first.state_with_contacts();
   EXPECT_EQ(saved.warm_start.size(), 12 * saved.particles.size());
-  PairwiseSimulation second(saved, box, params);
+  Simulation second(saved, box, params);
   for (int s = 0; s < 3; ++s) second.advance();
   for (std::size_t i = 0; i < saved.particles.size(); ++i)
     EXPECT_EQ(second.state().particles.position[i], whole.state().particles.position[i]);
@@ -96,7 +96,7 @@ TEST(WavyShear, LoneSphereMovesWithTheFaxenVelocityAndAddsItsFaxenStresslet) {
     params.lubrication = lubrication;
     params.flow.wave_amplitude = amplitude;
     params.flow.wave_periods = 1;
-    PairwiseSimulation sim(st, box, params);
+    Simulation sim(st, box, params);
     sim.evaluate();
     const Particles& p = sim.state().particles;
     const double u = y + amplitude * std::sin(k * y) - (a * a / 6) * amplitude * k * k * std::sin(k * y);

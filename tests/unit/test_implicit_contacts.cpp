@@ -107,7 +107,7 @@ TEST(ImplicitContacts, SqueezedPairRelaxesAsTheExactBackwardEulerRecursionAtAnyS
   const double lambda = 2.0 * k / (6.0 * pi * (1.0 + si.x11a - si.x12a));
   for (double lambda_dt : {0.1, 10.0}) {
     params.time_step.fixed = lambda_dt / lambda;
-    PairwiseSimulation sim(state_of({{9, 10, 10}, {11.0 - delta0, 10, 10}}, {1.0, 1.0}), box, params);
+    Simulation sim(state_of({{9, 10, 10}, {11.0 - delta0, 10, 10}}, {1.0, 1.0}), box, params);
     double expected = delta0;
     for (int s = 0; s < 8; ++s) {
       sim.advance();
@@ -121,7 +121,7 @@ TEST(ImplicitContacts, SqueezedPairRelaxesAsTheExactBackwardEulerRecursionAtAnyS
   }
   // Small steps: the exact relaxation exp(-lambda t) to first order in dt.
   params.time_step.fixed = 1e-3 / lambda;
-  PairwiseSimulation sim(state_of({{9, 10, 10}, {11.0 - delta0, 10, 10}}, {1.0, 1.0}), box, params);
+  Simulation sim(state_of({{9, 10, 10}, {11.0 - delta0, 10, 10}}, {1.0, 1.0}), box, params);
   for (int s = 0; s < 1000; ++s) sim.advance();
   const auto& x = sim.state().particles.position;
   EXPECT_NEAR((2.0 - (x[1] - x[0]).norm()) / (delta0 * std::exp(-1.0)), 1.0, 1e-3);
@@ -136,7 +136,7 @@ TEST(ImplicitContacts, VelocitiesBalanceTheEndOfStepContactForces) {
   params.time_step.fixed = 2e-3;
   auto st = cluster();
   st.strain = 0.37;
-  PairwiseSimulation sim(st, box, params);
+  Simulation sim(st, box, params);
   for (int s = 0; s < 3; ++s) sim.advance();  // builds tangential stretches
   sim.evaluate();
   ASSERT_GE(sim.contact_count(), 2u);
@@ -176,7 +176,7 @@ TEST(ImplicitContacts, StressControlHitsTheTarget) {
   params.flow.shear_stress = 2.5;
   auto st = cluster();
   st.strain = 0.3;
-  PairwiseSimulation sim(st, box, params);
+  Simulation sim(st, box, params);
   for (int s = 0; s < 4; ++s) {
     sim.evaluate();
     EXPECT_NEAR(sim.stress().total()(0, 1), 2.5, 1e-8) << s;
@@ -187,11 +187,11 @@ TEST(ImplicitContacts, StressControlHitsTheTarget) {
 TEST(ImplicitContacts, CheckpointedStateContinuesBitForBit) {
   const Box box(10, 10, 10);
   const SimulationParams params = frictional_lubricated(2.0e4);
-  PairwiseSimulation whole(cluster(), box, params);
+  Simulation whole(cluster(), box, params);
   for (int s = 0; s < 8; ++s) whole.advance();
-  PairwiseSimulation first(cluster(), box, params);
+  Simulation first(cluster(), box, params);
   for (int s = 0; s < 4; ++s) first.advance();
-  PairwiseSimulation second(first.state_with_contacts(), box, params);
+  Simulation second(first.state_with_contacts(), box, params);
   for (int s = 0; s < 4; ++s) second.advance();
   const auto& a = whole.state().particles;
   const auto& b = second.state().particles;
@@ -205,7 +205,7 @@ TEST(ImplicitContacts, CheckpointedStateContinuesBitForBit) {
 TEST(ImplicitContacts, NeedsTheOverdampedResistanceSolve) {
   SimulationParams params = frictional_lubricated(1.0e4);
   params.lubrication = false;
-  EXPECT_THROW(PairwiseSimulation(cluster(), Box(10, 10, 10), params), InputError);
+  EXPECT_THROW(Simulation(cluster(), Box(10, 10, 10), params), InputError);
   params.lubrication = true;
   params.integrator = Integrator::inertial;
   EXPECT_THROW(params.validate(), InputError);

@@ -32,7 +32,7 @@ double ring_down_error(double dt) {
   // from rest: delta = delta0 e^{-ct/2} (cos wd t + c/(2 wd) sin wd t), c = 6 pi / m, wd^2 = 2k/m - c^2/4.
   const double st = 1.0, kn = 100.0, delta0 = 0.05;
   const double m = st * 4.0 / 3.0 * pi, c = 6 * pi / m, wd = std::sqrt(2 * kn / m - c * c / 4);
-  PairwiseSimulation sim(state_of({{10, 10, 10}, {10, 10, 12 - delta0}}, {1.0, 1.0}), Box(20, 20, 20),
+  Simulation sim(state_of({{10, 10, 10}, {10, 10, 12 - delta0}}, {1.0, 1.0}), Box(20, 20, 20),
                          inertial(st, kn, dt));
   double worst = 0.0;
   for (int step = 1; step * dt <= 0.2; ++step) {
@@ -60,7 +60,7 @@ TEST(Inertial, OverlappingPairRingsDownAsTheDampedOscillatorItObeys) {
 TEST(Inertial, SmallStokesNumberRecoversTheOverdampedSeparation) {
   // St -> 0: the pair separates at the Stokes velocity, delta = delta0 exp(-2 k t / (6 pi)).
   const double kn = 100.0, delta0 = 0.02, dt = 1e-6;  // dt below the drag relaxation time m / (6 pi) = 2.2e-6
-  PairwiseSimulation sim(state_of({{10, 10, 10}, {10, 10, 12 - delta0}}, {1.0, 1.0}), Box(20, 20, 20),
+  Simulation sim(state_of({{10, 10, 10}, {10, 10, 12 - delta0}}, {1.0, 1.0}), Box(20, 20, 20),
                          inertial(1e-5, kn, dt));
   for (int step = 0; step < 20000; ++step) sim.advance();
   const double t = sim.state().time;
@@ -81,7 +81,7 @@ TEST(Inertial, SphereThrownAcrossTheShearedFaceRelaxesOntoTheLocalFlow) {
   s.verlet[5] = -0.5 * rate;
   SimulationParams params = inertial(st, 1e3, dt);
   params.flow.shear_rate = rate;
-  PairwiseSimulation sim(s, Box(10, 10, 10), params);
+  Simulation sim(s, Box(10, 10, 10), params);
   for (int step = 0; step < 3000; ++step) sim.advance();
   sim.evaluate();
   const double t = sim.state().time;
@@ -99,11 +99,11 @@ TEST(Inertial, LubricatedRunContinuesBitForBitFromItsState) {
   const auto start = state_of({{5, 5, 5}, {7.05, 5.3, 5}, {5, 7.39, 5.2}, {2, 9.2, 3}, {2.1, 1.2, 3.0}},
                               {1.0, 1.0, 1.4, 1.0, 1.0});
   const Box box(10, 10, 10);
-  PairwiseSimulation whole(start, box, params);
+  Simulation whole(start, box, params);
   for (int s = 0; s < 40; ++s) whole.advance();
-  PairwiseSimulation first(start, box, params);
+  Simulation first(start, box, params);
   for (int s = 0; s < 20; ++s) first.advance();
-  PairwiseSimulation second(first.state_with_contacts(), box, params);
+  Simulation second(first.state_with_contacts(), box, params);
   for (int s = 0; s < 20; ++s) second.advance();
   for (std::size_t i = 0; i < start.particles.size(); ++i)
     EXPECT_EQ(second.state().particles.position[i], whole.state().particles.position[i]);

@@ -16,7 +16,7 @@ TEST(Simulation, DiluteSuspensionHasTheEinsteinViscosity) {
   // Far-apart spheres: each adds its Stokes stresslet (20/3) pi a^3 E, so eta_r = 1 + (5/2) phi exactly.
   const Box box(40, 40, 40);
   const auto st = state_of({{5, 5, 5}, {20, 20, 20}, {30, 10, 25}}, {1.0, 1.4, 1.0});
-  PairwiseSimulation sim(st, box, SimulationParams{});
+  Simulation sim(st, box, SimulationParams{});
   sim.evaluate();
   const double phi = st.particles.volume() / box.volume();
   EXPECT_NEAR(sim.stress().total()(0, 1), 1.0 + 2.5 * phi, 1e-14);
@@ -33,7 +33,7 @@ TEST(Simulation, OverlappingPairSeparatesAtTheStokesVelocity) {
   auto st = state_of({{10, 10, 10}, {10, 10, 12 - overlap}}, {1.0, 1.0});
   SimulationParams params;
   params.flow.shear_rate = 1.0;
-  PairwiseSimulation sim(st, box, params);
+  Simulation sim(st, box, params);
   sim.evaluate();
   const double f = std::get<ComposedLaw<ContactModel<SoftRepulsion>>>(params.contact).contact.normal.p.kn * overlap;  // along z, pushing 1 away from 0
   EXPECT_NEAR(sim.state().particles.velocity[1].z(), f / (6 * pi), 1e-12);
@@ -55,7 +55,7 @@ TEST(Simulation, ParticleCrossingTheShearedFaceIsRemapped) {
   params.time_step.mode = TimeStepParams::Mode::fixed;
   params.time_step.fixed = 0.01;
   params.flow.shear_rate = 2.0;
-  PairwiseSimulation sim(st, box, params);
+  Simulation sim(st, box, params);
   sim.evaluate();
   const Vec3 r0 = sim.state().particles.position[0];
   const Vec3 u0 = sim.state().particles.velocity[0];
@@ -76,7 +76,7 @@ TEST(Simulation, ParticleCrossingTheShearedFaceIsRemapped) {
 TEST(Simulation, RunawayOverlapStopsWithTheParticlesNamedAndStateKept) {
   const Box box(20, 20, 20);
   auto st = state_of({{10, 10, 10}, {10, 10, 11.5}}, {1.0, 1.0});  // overlap 0.5 > 0.1
-  PairwiseSimulation sim(st, box, SimulationParams{});
+  Simulation sim(st, box, SimulationParams{});
   try {
     sim.evaluate();
     FAIL() << "an overlap of half a radius must stop the run";
@@ -103,7 +103,7 @@ TEST(Simulation, ContactsAreThePairsWithANormalContactForce) {
   const auto st = state_of({{5, 5, 5}, {7 + 0.4 * h, 5, 5}, {5, 15, 5}, {5, 17.4 + 0.9 * h, 5}, {15, 5, 15},
                             {15, 5, 17 + 1.5 * h}, {25, 25, 25}},
                            {1.0, 1.0, 1.0, 1.4, 1.0, 1.0, 1.0});
-  PairwiseSimulation sim(st, box, params);
+  Simulation sim(st, box, params);
   sim.evaluate();
   EXPECT_EQ(sim.contact_count(), 2u);
   EXPECT_EQ(sim.max_overlap(), 0.0);

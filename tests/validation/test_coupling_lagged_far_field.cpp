@@ -14,7 +14,7 @@
 #include <random>
 
 #include "core/rng.hpp"
-#include "coupling/fcm_simulation.hpp"
+#include "coupling/fcm_model.hpp"
 #include "tests/simulation_state.hpp"
 
 using namespace suspend;
@@ -53,7 +53,7 @@ SimulationParams cluster_params() {
 
 // RMS over particles of |U_a - U_b| (disturbance = lab difference here: same positions and rate), over the RMS of
 // the disturbance velocities of b.
-double velocity_error(const FcmSimulation& a, const FcmSimulation& b) {
+double velocity_error(const Simulation& a, const Simulation& b) {
   const Particles& pa = a.state().particles;
   const Particles& pb = b.state().particles;
   double num = 0.0, den = 0.0;
@@ -69,16 +69,16 @@ double velocity_error(const FcmSimulation& a, const FcmSimulation& b) {
 TEST(LaggedFarField, AtTheLastFullSolveItIsTheFullSolution) {
   const Box box(9, 9, 9);
   const SimulationParams params = cluster_params();
-  FcmSimulation full(cluster(3), box, params, fcm_params(2));
+  Simulation full = fcm_simulation(cluster(3), box, params, fcm_params(2));
   full.advance();  // step 0: full
   full.advance();  // step 1: lagged
   full.evaluate();  // step 2: full, its defect kept
-  EXPECT_GT(full.stokes_solves(), 0);
+  EXPECT_GT(fcm_model(full).stokes_solves(), 0);
   SimulationState same = full.state_with_contacts();
   same.step = 3;  // the schedule now asks for a lagged step, at the configuration of the full solve
-  FcmSimulation lagged(same, box, params, fcm_params(2));
+  Simulation lagged = fcm_simulation(same, box, params, fcm_params(2));
   lagged.evaluate();
-  EXPECT_EQ(lagged.stokes_solves(), 0);
+  EXPECT_EQ(fcm_model(lagged).stokes_solves(), 0);
   EXPECT_GT(lagged.contact_count(), 0u);
   const double err = velocity_error(lagged, full);
   const double stress_err = (lagged.stress().total() - full.stress().total()).norm() / full.stress().total().norm();
@@ -91,8 +91,8 @@ TEST(LaggedFarField, ErrorAgainstTheEveryStepSolutionGrowsWithTheLag) {
   const Box box(9, 9, 9);
   const SimulationParams params = cluster_params();
   const int k = 16;
-  FcmSimulation every(cluster(5), box, params, fcm_params(1));
-  FcmSimulation lagged(cluster(5), box, params, fcm_params(k));
+  Simulation every = fcm_simulation(cluster(5), box, params, fcm_params(1));
+  Simulation lagged = fcm_simulation(cluster(5), box, params, fcm_params(k));
   std::vector<double> err, stress_err;
   for (int s = 0; s < k; ++s) {
     every.evaluate();
@@ -123,7 +123,7 @@ TEST(LaggedFarField, SqueezedPairSeparatesAtTheExactRateOnLaggedSteps) {
   params.time_step.fixed = 2e-4;
   const double kn = std::get<ComposedLaw<ContactModel<SoftRepulsion>>>(params.contact).contact.normal.p.kn;
   const double x11a = 252.549849, x12a = -251.904583;  // tests/data/two_sphere_resistance_table.txt, xi = 1e-3
-  FcmSimulation sim(state_of({{11, 12.2, 12.7}, {13 - 0.01, 12.2, 12.7}}, {1.0, 1.0}), box, params, fcm_params(100));
+  Simulation sim = fcm_simulation(state_of({{11, 12.2, 12.7}, {13 - 0.01, 12.2, 12.7}}, {1.0, 1.0}), box, params, fcm_params(100));
   for (int s = 0; s < 8; ++s) {
     sim.evaluate();
     const auto& x = sim.state().particles.position;
@@ -132,9 +132,9 @@ TEST(LaggedFarField, SqueezedPairSeparatesAtTheExactRateOnLaggedSteps) {
     const Particles& p = sim.state().particles;
     const double rel = p.velocity[1].x() - p.velocity[0].x();
     const double want = 2.0 * kn * overlap / (6.0 * pi * (x11a - x12a));
-    std::cout << "step " << s << (sim.stokes_solves() > 0 ? " (full)" : " (lagged)") << ": separation rate " << rel
+    std::cout << "step " << s << (fcm_model(sim).stokes_solves() > 0 ? " (full)" : " (lagged)") << ": separation rate " << rel
               << ", exact " << want << "\n";
-    EXPECT_EQ(sim.stokes_solves() > 0, s == 0);
+    EXPECT_EQ(fcm_model(sim).stokes_solves() > 0, s == 0);
     EXPECT_NEAR(rel / want, 1.0, 1e-3);
     sim.advance();
   }
@@ -146,17 +146,17 @@ namespace {
 // the far field refreshed every third step: the same positions bit for bit, the restarted part spanning a full solve.
 void expect_restart_repeats_the_uninterrupted_run(const SimulationParams& params) {
   const Box box(9, 9, 9);
-  FcmSimulation whole(cluster(11), box, params, fcm_params(3));
+  Simulation whole = fcm_simulation(cluster(11), box, params, fcm_params(3));
   SimulationState checkpoint;
   for (int s = 0; s < 7; ++s) {
     if (s == 4) checkpoint = whole.state_with_contacts();
     whole.evaluate();
     whole.advance();
   }
-  FcmSimulation resumed(checkpoint, box, params, fcm_params(3));
+  Simulation resumed = fcm_simulation(checkpoint, box, params, fcm_params(3));
   for (int s = 4; s < 7; ++s) {
     resumed.evaluate();
-    EXPECT_EQ(resumed.stokes_solves() > 0, s == 6) << s;
+    EXPECT_EQ(fcm_model(resumed).stokes_solves() > 0, s == 6) << s;
     resumed.advance();
   }
   for (std::size_t i = 0; i < whole.state().particles.size(); ++i)

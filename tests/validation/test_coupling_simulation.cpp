@@ -1,4 +1,4 @@
-// FcmSimulation (FCM + sub-grid lubrication + the shared contact module) against exact values:
+// The FCM simulation (fcm_simulation: FCM + sub-grid lubrication + the shared contact module) against exact values:
 //  * two overlapping equal spheres pushed apart by a soft repulsion separate at the rate the exact resistance
 //    gives, (u_j - u_i).n = 2 F / (6 pi a (X11A - X12A)) at the saturated gap xi = h_in/a = 1e-3 (table value,
 //    tests/data/two_sphere_resistance_table.txt, s' = 2.001);
@@ -14,7 +14,7 @@
 #include <random>
 
 #include "core/rng.hpp"
-#include "coupling/fcm_simulation.hpp"
+#include "coupling/fcm_model.hpp"
 #include "tests/simulation_state.hpp"
 
 using namespace suspend;
@@ -38,7 +38,7 @@ TEST(CouplingSimulation, OverlappingPairSeparatesAtTheExactRate) {
   const auto st = state_of({{11, 12.2, 12.7}, {13 - overlap, 12.2, 12.7}}, {1.0, 1.0});
   SimulationParams params;
   params.flow.shear_rate = 0.0;
-  FcmSimulation sim(st, box, params, fcm_params());
+  Simulation sim = fcm_simulation(st, box, params, fcm_params());
   sim.evaluate();
   const double f = std::get<ComposedLaw<ContactModel<SoftRepulsion>>>(params.contact).contact.normal.p.kn * overlap;
   // Exact X11A and X12A at s' = 2.001 (xi = 1e-3, the inner cutoff h_in = 1e-3 a).
@@ -50,7 +50,7 @@ TEST(CouplingSimulation, OverlappingPairSeparatesAtTheExactRate) {
             << " GMRES iterations\n";
   EXPECT_NEAR(rel / want, 1.0, 0.02);
   EXPECT_EQ(sim.contact_count(), 1u);
-  EXPECT_EQ(sim.corrected_pairs(), 1u);
+  EXPECT_EQ(fcm_model(sim).corrected_pairs(), 1u);
 }
 
 TEST(CouplingSimulation, DiluteSuspensionHasTheEinsteinViscosity) {
@@ -68,7 +68,7 @@ TEST(CouplingSimulation, DiluteSuspensionHasTheEinsteinViscosity) {
       if (ok) pos.push_back(x);
     }
     SimulationParams params;
-    FcmSimulation sim(state_of(pos, std::vector<double>(pos.size(), 1.0)), box, params, fcm_params());
+    Simulation sim = fcm_simulation(state_of(pos, std::vector<double>(pos.size(), 1.0)), box, params, fcm_params());
     sim.evaluate();
     const double phi = sim.state().particles.volume() / box.volume();
     EXPECT_EQ(sim.contact_count(), 0u);
@@ -91,7 +91,7 @@ TEST(CouplingSimulation, ShortShearedRunIsDeterministicAndFinite) {
   SimulationParams params;
   params.time_step.max = 0.01;
   auto run = [&] {
-    FcmSimulation sim(state_of(pos, std::vector<double>(pos.size(), 1.0)), box, params, fcm_params());
+    Simulation sim = fcm_simulation(state_of(pos, std::vector<double>(pos.size(), 1.0)), box, params, fcm_params());
     for (int s = 0; s < 10; ++s) {
       sim.evaluate();
       EXPECT_TRUE(sim.stress().total().allFinite());
@@ -126,14 +126,14 @@ void expect_restart_repeats_the_uninterrupted_run(const SimulationParams& params
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k)
         pos.push_back(Vec3(1.5 + 3.0 * i + jitter(rng), 1.5 + 3.0 * j + jitter(rng), 1.5 + 3.0 * k + jitter(rng)));
-  FcmSimulation whole(state_of(pos, std::vector<double>(pos.size(), 1.0)), box, params, fcm_params());
+  Simulation whole = fcm_simulation(state_of(pos, std::vector<double>(pos.size(), 1.0)), box, params, fcm_params());
   SimulationState checkpoint;
   for (int s = 0; s < 6; ++s) {
     if (s == 3) checkpoint = whole.state_with_contacts();
     whole.evaluate();
     whole.advance();
   }
-  FcmSimulation resumed(checkpoint, box, params, fcm_params());
+  Simulation resumed = fcm_simulation(checkpoint, box, params, fcm_params());
   for (int s = 3; s < 6; ++s) {
     resumed.evaluate();
     resumed.advance();
@@ -175,7 +175,7 @@ TEST(CouplingSimulation, ImplicitContactsRelaxAnOverlapAsBackwardEulerWithTheExa
   params.time_step.implicit_contacts = true;
   params.time_step.mode = TimeStepParams::Mode::fixed;
   params.time_step.fixed = 5.0 / lambda;
-  FcmSimulation sim(state_of({{11, 12.2, 12.7}, {13 - overlap, 12.2, 12.7}}, {1.0, 1.0}), box, params, fcm_params());
+  Simulation sim = fcm_simulation(state_of({{11, 12.2, 12.7}, {13 - overlap, 12.2, 12.7}}, {1.0, 1.0}), box, params, fcm_params());
   double delta = overlap;
   for (int s = 0; s < 3; ++s) {
     sim.advance();
@@ -206,7 +206,7 @@ TEST(CouplingSimulation, StressControlHitsTheTargetAndEqualsTheRateControlledSte
   f.krylov_tolerance = 1e-9;
   f.far_field_every = 1;  // the full solve's linearity (a lagged step is checked in test_coupling_lagged_far_field)
   auto st = state_of(pos, std::vector<double>(pos.size(), 1.0));
-  FcmSimulation stress(st, box, params, f);
+  Simulation stress = fcm_simulation(st, box, params, f);
   for (int s = 0; s < 3; ++s) stress.advance();
   stress.evaluate();
   EXPECT_GT(stress.contact_count(), 0u);
@@ -215,7 +215,7 @@ TEST(CouplingSimulation, StressControlHitsTheTargetAndEqualsTheRateControlledSte
   SimulationState same = stress.state_with_contacts();
   params.flow.control = FlowControl::rate;
   params.flow.shear_rate = stress.shear_rate();
-  FcmSimulation rate(same, box, params, f);
+  Simulation rate = fcm_simulation(same, box, params, f);
   rate.evaluate();
   std::cout << "stress control: rate " << stress.shear_rate() << ", Sigma_xy at that rate "
             << rate.stress().total()(0, 1) << "\n";
