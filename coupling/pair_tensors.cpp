@@ -4,72 +4,8 @@
 #include <numbers>
 
 namespace suspend::coupling {
-namespace {
 
-constexpr double pi = std::numbers::pi;
-
-// The strain E seen along d = n: E n and n.E.n (along -n: -E n and the same n.E.n).
-struct StrainAlong {
-  Vec3 en;
-  double ded;
-  Vec3 cross;  // n x (E n)
-  StrainAlong(const Vec3& n, const Mat3& e) : en(e * n), ded(n.dot(en)), cross(n.cross(en)) {}
-};
-
-// Force of strain E through G^{ba}_{jki} E_jk along d = n: X (d.E.d) d + 2 Y (E d - (d.E.d) d); along -n it
-// changes sign (both terms are odd in d).
-Vec3 strain_force(double scale, const Vec3& n, double x, double y, const StrainAlong& e) {
-  return scale * (x * e.ded * n + 2.0 * y * (e.en - e.ded * n));
-}
-
-// Torque of strain E through H^{ba}_{jki} E_jk: 2 Y d x (E d), even in d.
-Vec3 strain_torque(double scale, double y, const StrainAlong& e) { return scale * 2.0 * y * e.cross; }
-
-}  // namespace
-
-Matrix12 pair_resistance(double a_i, double a_j, const Vec3& n, const ResistanceScalars& si,
-                         const ResistanceScalars& sj) {
-  Matrix12 r;
-  const Mat3 nn = n * n.transpose();
-  const Mat3 tt = Mat3::Identity() - nn;
-  Mat3 nx;
-  nx << 0.0, -n.z(), n.y(), n.z(), 0.0, -n.x(), -n.y(), n.x(), 0.0;
-  const double fa_i = 6.0 * pi * a_i, fa_j = 6.0 * pi * a_j;
-  const double fb_i = 4.0 * pi * a_i * a_i, fb_j = 4.0 * pi * a_j * a_j;
-  const double fc_i = 8.0 * pi * a_i * a_i * a_i, fc_j = 8.0 * pi * a_j * a_j * a_j;
-  r.block<3, 3>(0, 0) = fa_i * (si.x11a * nn + si.y11a * tt);
-  r.block<3, 3>(6, 6) = fa_j * (sj.x11a * nn + sj.y11a * tt);
-  r.block<3, 3>(0, 6) = fa_i * (si.x12a * nn + si.y12a * tt);
-  r.block<3, 3>(6, 0) = r.block<3, 3>(0, 6);
-  r.block<3, 3>(3, 3) = fc_i * (si.x11c * nn + si.y11c * tt);
-  r.block<3, 3>(9, 9) = fc_j * (sj.x11c * nn + sj.y11c * tt);
-  r.block<3, 3>(3, 9) = fc_i * (si.x12c * nn + si.y12c * tt);
-  r.block<3, 3>(9, 3) = r.block<3, 3>(3, 9);
-  // B v = Y v x d = -Y [d]_x v; seen from j, d = -n.
-  r.block<3, 3>(3, 0) = (-fb_i * si.y11b) * nx;
-  r.block<3, 3>(3, 6) = (-fb_i * si.y12b) * nx;
-  r.block<3, 3>(9, 6) = (fb_j * sj.y11b) * nx;
-  r.block<3, 3>(9, 0) = (fb_j * sj.y12b) * nx;
-  r.block<3, 3>(0, 3) = r.block<3, 3>(3, 0).transpose();
-  r.block<3, 3>(6, 3) = r.block<3, 3>(3, 6).transpose();
-  r.block<3, 3>(6, 9) = r.block<3, 3>(9, 6).transpose();
-  r.block<3, 3>(0, 9) = r.block<3, 3>(9, 0).transpose();
-  return r;
-}
-
-Vector12 pair_strain_forces(double a_i, double a_j, const Vec3& n, const ResistanceScalars& si,
-                            const ResistanceScalars& sj, const Mat3& e_i, const Mat3& e_j) {
-  Vector12 f;
-  // Seen from j, d = -n: the forces flip sign, the torques do not.
-  const StrainAlong ei(n, e_i), ej(n, e_j);
-  const double fg_i = 4.0 * pi * a_i * a_i, fg_j = 4.0 * pi * a_j * a_j;
-  const double fh_i = 8.0 * pi * a_i * a_i * a_i, fh_j = 8.0 * pi * a_j * a_j * a_j;
-  f.segment<3>(0) = strain_force(fg_i, n, si.x11g, si.y11g, ei) - strain_force(fg_j, n, sj.x12g, sj.y12g, ej);
-  f.segment<3>(6) = strain_force(fg_i, n, si.x12g, si.y12g, ei) - strain_force(fg_j, n, sj.x11g, sj.y11g, ej);
-  f.segment<3>(3) = strain_torque(fh_i, si.y11h, ei) + strain_torque(fh_j, sj.y12h, ej);
-  f.segment<3>(9) = strain_torque(fh_j, sj.y11h, ej) + strain_torque(fh_i, si.y12h, ei);
-  return f;
-}
+using std::numbers::pi;
 
 PairResistanceCoefficients pair_resistance_coefficients(double a_i, double a_j, const ResistanceScalars& si,
                                                         const ResistanceScalars& sj) {

@@ -1,7 +1,7 @@
 // Pair resistance tensors from the two-sphere scalars, for any line of centres (the sub-grid correction's blocks).
 //
-// CONTRACT (identical to dem/hydro/lubrication.hpp, whose assembly is private; test_coupling_pair_tensors checks
-// that both agree to round-off):
+// CONTRACT (that of dem/hydro/lubrication.hpp, whose pair_resistance and pair_strain_forces assemble the full
+// tensors; test_coupling_pair_tensors checks the block coefficients and the matrix-free product against them):
 //  * n = (x_j - x_i)/|x_j - x_i|; generalised velocity V = (U_i, Omega_i, U_j, Omega_j), forces (F_i, T_i, F_j, T_j).
 //  * Scalars in the Kim & Karrila normalisation of dem/hydro/resistance_functions.hpp, `from_i` seen from i
 //    (lambda = a_j/a_i, d = n), `from_j` seen from j (lambda = a_i/a_j, d = -n).
@@ -32,10 +32,9 @@ inline constexpr std::array<const char*, 16> correction_function_names{
     "X11A", "X12A", "Y11A", "Y12A", "Y11B", "Y12B", "X11C", "X12C",
     "Y11C", "Y12C", "X11G", "X12G", "Y11G", "Y12G", "Y11H", "Y12H"};
 
-Matrix12 pair_resistance(double a_i, double a_j, const Vec3& n, const ResistanceScalars& from_i,
-                         const ResistanceScalars& from_j);
-Vector12 pair_strain_forces(double a_i, double a_j, const Vec3& n, const ResistanceScalars& from_i,
-                            const ResistanceScalars& from_j, const Mat3& e_i, const Mat3& e_j);
+// The full tensors from the scalars: the pairwise engine's (dem/hydro/lubrication.hpp).
+using hydro::pair_resistance;
+using hydro::pair_strain_forces;
 // The resistance of pair_resistance reduced to the 16 coefficients of its blocks: A and C blocks
 // y I + x n n (y = f Y, x = f (X - Y), f = 6 pi a or 8 pi a^3 of the sphere the block is seen from), B blocks
 // b [n]_x (b = 4 pi a^2 Y, signs as in pair_resistance).

@@ -1,10 +1,12 @@
 #include "io/contact_case.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace suspend::io {
@@ -88,11 +90,17 @@ ContactLaw read_law(SchemaReader& r) {
 // species_pairs: [{species: [i, j], keys of the law to change}, ...]: each entry is read as the case's contact
 // with its keys replaced, and must give the same law, friction and rolling.
 void read_species_pairs(SchemaReader& r, int species, ContactLaw& law) {
+  std::vector<std::pair<int, int>> seen;
   for (SchemaReader e : r.children("species_pairs")) {
     const std::vector<double> s = e.number_list("species", Range::closed(0.0, species - 1.0));
     if (s.size() != 2 || s[0] != std::floor(s[0]) || s[1] != std::floor(s[1]))
       e.fail("species", "give two species indices [i, j], each an integer in [0, " + std::to_string(species - 1) +
                             "] (the order of particles.species)");
+    const std::pair<int, int> ij = std::minmax(static_cast<int>(s[0]), static_cast<int>(s[1]));
+    if (std::find(seen.begin(), seen.end(), ij) != seen.end())
+      e.fail("species", "the pair [" + std::to_string(ij.first) + ", " + std::to_string(ij.second) +
+                            "] is given twice; give each species pair once");
+    seen.push_back(ij);
     for (const char* key : {"law", "repulsion", "attraction", "species_pairs"})
       if (e.has(key))
         e.fail(key, "a species pair takes the case's law and surface forces; give only the parameters that differ");

@@ -136,6 +136,19 @@ ConjugateGradientReport PreconditionedConjugateGradient::solve(const SymmetricBl
   p_ = rho_;
   double rr = dot(rho_, rho_);
   double target = std::sqrt(rr) * tolerance * b_norm / true_norm;  // assumes |rho| proportional to |r|
+  // The candidate x + d and the norm of its true residual b - A (x + d).
+  auto check_candidate = [&] {
+    if (ssor) {
+      backward(a, u_, w_);
+      unscale(w_, t_);
+    } else {
+      unscale(u_, t_);
+    }
+    candidate_ = x + t_;
+    a.multiply(candidate_, q_);
+    w_ = b - q_;
+    return std::sqrt(dot(w_, w_));
+  };
   int k = 0;
   bool checked = true;
   while (k < max_iterations) {
@@ -158,35 +171,14 @@ ConjugateGradientReport PreconditionedConjugateGradient::solve(const SymmetricBl
     ++k;
     checked = false;
     if (std::sqrt(rr) <= target || k == max_iterations) {
-      // Candidate x + d and its true residual.
-      if (ssor) {
-        backward(a, u_, w_);
-        unscale(w_, t_);
-      } else {
-        unscale(u_, t_);
-      }
-      candidate_ = x + t_;
-      a.multiply(candidate_, q_);
-      w_ = b - q_;
-      const double r_norm = std::sqrt(dot(w_, w_));
+      const double r_norm = check_candidate();
       checked = true;
       true_norm = r_norm;
       if (!std::isfinite(r_norm) || r_norm <= tolerance * b_norm) break;
       target = 0.5 * std::sqrt(rr) * tolerance * b_norm / r_norm;
     }
   }
-  if (!checked) {  // breakdown before a check: report the last iterate honestly
-    if (ssor) {
-      backward(a, u_, w_);
-      unscale(w_, t_);
-    } else {
-      unscale(u_, t_);
-    }
-    candidate_ = x + t_;
-    a.multiply(candidate_, q_);
-    w_ = b - q_;
-    true_norm = std::sqrt(dot(w_, w_));
-  }
+  if (!checked) true_norm = check_candidate();  // breakdown before a check: report the last iterate honestly
   if (k > 0) x = candidate_;
   report.iterations = k;
   report.residual = true_norm / b_norm;

@@ -4,8 +4,8 @@
 //   ContactLaw = std::variant<ComposedLaw<ContactModel<N, F, R>>...> over every normal law N, friction F, rolling R
 // Every alternative has the same call shape, PairForce law(geometry, motion, dt, history), returns forces ON j by
 // contribution and torques on i and j (pair_geometry.hpp), and updates the pair history in place (in_contact false
-// when the pair carries no history any more). A driver visits the variant once per step (with_law or
-// evaluate_pairs) and loops over pairs inside, so the inner loop calls the concrete law directly: no virtual call,
+// when the pair carries no history any more). A driver visits the variant once per step (with_law) and
+// loops over pairs inside, so the inner loop calls the concrete law directly: no virtual call,
 // no per-pair dispatch (STYLE.md habit 6).
 //
 // A new law: its file (a struct with name, documentation, parameters, apply, energy, read and write, as
@@ -150,25 +150,6 @@ inline double stiffness_scale(const ContactLaw& law) {
 template <class Fn>
 decltype(auto) with_law(const ContactLaw& law, Fn&& fn) {
   return std::visit(std::forward<Fn>(fn), law);
-}
-
-// Evaluates pairs k in [begin, end) with one visit: pair(k) returns a PairState, history(k) the pair's history
-// (updated in place), sink(k, const PairForce&) consumes the result. Threaded drivers call it on disjoint chunks.
-struct PairState {
-  PairGeometry geometry;
-  RelativeMotion motion;
-};
-template <class PairFn, class HistoryFn, class SinkFn>
-void evaluate_pairs(const ContactLaw& law, std::size_t begin, std::size_t end, double dt, PairFn&& pair,
-                    HistoryFn&& history, SinkFn&& sink) {
-  std::visit(
-      [&](const auto& l) {
-        for (std::size_t k = begin; k < end; ++k) {
-          const PairState s = pair(k);
-          sink(k, l(s.geometry, s.motion, dt, history(k)));
-        }
-      },
-      law);
 }
 
 // The constant adhesion force F_adh of the normal law (paper 004 eq. 16), 0 for laws without adhesion: it sets the

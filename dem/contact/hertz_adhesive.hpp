@@ -48,19 +48,12 @@ struct HertzAdhesiveParams {
   double repulsion_onset = 0.1;      // h_s / h_r
   double repulsion_stiffness = 1.0e2;  // k_s / k_n
   void validate() const {
-    auto positive = [](double v, const char* key) {
-      if (!(v > 0.0)) throw InputError(std::string("contact.") + key + " = " + std::to_string(v) + " must be > 0");
-    };
-    auto non_negative = [](double v, const char* key) {
-      if (!(v >= 0.0)) throw InputError(std::string("contact.") + key + " = " + std::to_string(v) + " must be >= 0");
-    };
-    positive(roughness, "roughness");
-    positive(eps_bar, "eps_bar");
-    positive(kn, "kn");
-    non_negative(f_adh, "f_adh");
-    non_negative(repulsion_stiffness, "repulsion_stiffness");
-    if (!(repulsion_onset >= 0.0 && repulsion_onset <= 1.0))
-      throw InputError("contact.repulsion_onset = " + std::to_string(repulsion_onset) + " must be in [0, 1]");
+    require(roughness, Range::positive(), "contact.roughness");
+    require(eps_bar, Range::positive(), "contact.eps_bar");
+    require(kn, Range::positive(), "contact.kn");
+    require(f_adh, Range::non_negative(), "contact.f_adh");
+    require(repulsion_stiffness, Range::non_negative(), "contact.repulsion_stiffness");
+    require(repulsion_onset, Range::closed(0.0, 1.0), "contact.repulsion_onset");
   }
 };
 
@@ -68,7 +61,7 @@ struct HertzAdhesiveParams {
 // Gamma-bar = 6 pi / (k_n (eps_bar h_r)^(3/2)) (eq. 17), G_adh = F_adh / (6 pi) (section II E 1).
 inline HertzAdhesiveParams hertz_adhesive_from_groups(double gamma_bar, double g_adh, double eps_bar,
                                                       double roughness) {
-  if (!(gamma_bar > 0.0)) throw InputError("contact.gamma_bar = " + std::to_string(gamma_bar) + " must be > 0");
+  require(gamma_bar, Range::positive(), "contact.gamma_bar");
   HertzAdhesiveParams p;
   p.roughness = roughness;
   p.eps_bar = eps_bar;

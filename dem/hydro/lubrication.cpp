@@ -116,17 +116,17 @@ Matrix12 PairLubrication::resistance(const Vec3& n, double gap) const {
   if (!active(gap)) return Matrix12::Zero();
   ResistanceScalars si, sj;
   scalars(gap, si, sj);
-  return assemble(n, si, sj);
+  return pair_resistance(a_i_, a_j_, n, si, sj);
 }
 
-Matrix12 PairLubrication::assemble(const Vec3& n, const ResistanceScalars& si, const ResistanceScalars& sj) const {
+Matrix12 pair_resistance(double ai, double aj, const Vec3& n, const ResistanceScalars& si,
+                         const ResistanceScalars& sj) {
   Matrix12 r;  // all 16 blocks are written below
   // d d^T is the same seen from i (d = n) and from j (d = -n); [d]_x flips sign.
   const Mat3 nn = normal_projector(n);
   const Mat3 tt = Mat3::Identity() - nn;
   Mat3 nx;
   nx << 0.0, -n.z(), n.y(), n.z(), 0.0, -n.x(), -n.y(), n.x(), 0.0;
-  const double ai = a_i_, aj = a_j_;
   const double fa_i = 6.0 * pi * ai, fa_j = 6.0 * pi * aj;
   const double fb_i = 4.0 * pi * ai * ai, fb_j = 4.0 * pi * aj * aj;
   const double fc_i = 8.0 * pi * ai * ai * ai, fc_j = 8.0 * pi * aj * aj * aj;
@@ -158,14 +158,13 @@ Vector12 PairLubrication::strain_forces(const Vec3& n, double gap, const Mat3& e
   if (!active(gap)) return Vector12::Zero();
   ResistanceScalars si, sj;
   scalars(gap, si, sj);
-  return strain_response(n, si, sj, e_i, e_j);
+  return pair_strain_forces(a_i_, a_j_, n, si, sj, e_i, e_j);
 }
 
-Vector12 PairLubrication::strain_response(const Vec3& n, const ResistanceScalars& si, const ResistanceScalars& sj,
-                                          const Mat3& e_i, const Mat3& e_j) const {
+Vector12 pair_strain_forces(double ai, double aj, const Vec3& n, const ResistanceScalars& si,
+                            const ResistanceScalars& sj, const Mat3& e_i, const Mat3& e_j) {
   Vector12 f;
   const Vec3 m = -n;
-  const double ai = a_i_, aj = a_j_;
   const double fg_i = 4.0 * pi * ai * ai, fg_j = 4.0 * pi * aj * aj;
   const double fh_i = 8.0 * pi * ai * ai * ai, fh_j = 8.0 * pi * aj * aj * aj;
   // F_a = G^{aa}_{jki} E_a,jk + G^{ba}_{jki} E_b,jk: the second term is the stresslet of b due to the motion of a.
@@ -181,7 +180,8 @@ PairHydroForce PairLubrication::evaluate(const Vec3& n, double gap, const PairMo
   if (!active(gap)) return out;
   ResistanceScalars si, sj;
   scalars(gap, si, sj);
-  const Vector12 f = -assemble(n, si, sj) * mo.stacked() + strain_response(n, si, sj, mo.e_i, mo.e_j);
+  const Vector12 f = -pair_resistance(a_i_, a_j_, n, si, sj) * mo.stacked() +
+                     pair_strain_forces(a_i_, a_j_, n, si, sj, mo.e_i, mo.e_j);
   out.force_i = f.segment<3>(0);
   out.torque_i = f.segment<3>(3);
   out.force_j = f.segment<3>(6);

@@ -65,6 +65,14 @@ struct PairHydroForce {
   Mat3 stresslet_i = Mat3::Zero(), stresslet_j = Mat3::Zero();
 };
 
+// The pair tensors of spheres a_i, a_j along n from their scalars seen from i and from j (any resistance: the
+// lubrication law's, or the sub-grid correction's, coupling/subgrid_lubrication.hpp). R, 12x12, ordering
+// (U_i, Omega_i, U_j, Omega_j), F = -R (V - V_inf) ON the particles; R_FE : E, ordering (F_i, T_i, F_j, T_j).
+Matrix12 pair_resistance(double a_i, double a_j, const Vec3& n, const ResistanceScalars& si,
+                         const ResistanceScalars& sj);
+Vector12 pair_strain_forces(double a_i, double a_j, const Vec3& n, const ResistanceScalars& si,
+                            const ResistanceScalars& sj, const Mat3& e_i, const Mat3& e_j);
+
 // The law for one species pair (a_i, a_j): lambda-dependent coefficients computed once at construction.
 class PairLubrication {
  public:
@@ -88,10 +96,6 @@ class PairLubrication {
   bool exact() const { return exact_i_ != nullptr; }
 
  private:
-  Matrix12 assemble(const Vec3& n, const ResistanceScalars& si, const ResistanceScalars& sj) const;
-  Vector12 strain_response(const Vec3& n, const ResistanceScalars& si, const ResistanceScalars& sj, const Mat3& e_i,
-                           const Mat3& e_j) const;
-
   double a_i_, a_j_;
   LubricationParams params_;
   LubricationCoefficients from_i_, from_j_;

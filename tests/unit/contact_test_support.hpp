@@ -4,10 +4,21 @@
 #include <random>
 
 #include "core/vec.hpp"
+#include "dem/contact/hertz_adhesive.hpp"
 #include "dem/contact/pair_geometry.hpp"
 #include "dem/contact/pair_history.hpp"
 
 namespace suspend::test {
+
+// Paper 004's Hertz adhesive contact (eq. 16) with round numbers: roughness 0.01, eps_bar 0.05, k_n 1e5, F_adh 2.
+inline HertzAdhesiveParams round_hertz_adhesive() {
+  HertzAdhesiveParams p;
+  p.roughness = 0.01;
+  p.eps_bar = 0.05;
+  p.kn = 1.0e5;
+  p.f_adh = 2.0;
+  return p;
+}
 
 inline Mat3 random_rotation(std::mt19937_64& rng) {
   std::normal_distribution<double> g(0.0, 1.0);

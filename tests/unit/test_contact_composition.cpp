@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 
+#include "contact_test_support.hpp"
 #include "core/error.hpp"
 #include "dem/contact/contact_law.hpp"
 #include "dem/simulation.hpp"
@@ -20,12 +21,9 @@ using namespace suspend;
 using namespace suspend::io;
 
 namespace {
+// Without the short-range repulsion, so that the load is the Hertz force alone.
 HertzAdhesiveParams simple() {
-  HertzAdhesiveParams p;
-  p.roughness = 0.01;
-  p.eps_bar = 0.05;
-  p.kn = 1.0e5;
-  p.f_adh = 2.0;
+  HertzAdhesiveParams p = test::round_hertz_adhesive();
   p.repulsion_stiffness = 0.0;
   return p;
 }
@@ -215,4 +213,8 @@ TEST(ContactSpeciesPairs, RefusesWhatASpeciesPairCannotChange) {
   EXPECT_NE(e.find("not which friction law"), std::string::npos) << e;
   e = error_of("{law: hertz_adhesive, species_pairs: [{species: [0, 1], mu_z: 0.1}]}");
   EXPECT_NE(e.find("contact.species_pairs[0].mu_z: unknown key"), std::string::npos) << e;
+  // [1, 0] is [0, 1]: a second entry for it would silently replace the first.
+  e = error_of("{law: hertz_adhesive, species_pairs: [{species: [0, 1], mu_s: 0.1}, {species: [1, 0], mu_s: 0.2}]}");
+  EXPECT_NE(e.find("contact.species_pairs[1].species"), std::string::npos) << e;
+  EXPECT_NE(e.find("given twice"), std::string::npos) << e;
 }

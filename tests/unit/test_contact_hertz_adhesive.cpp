@@ -16,14 +16,7 @@ using namespace suspend::test;
 
 namespace {
 constexpr double kPi = std::numbers::pi;
-HertzAdhesiveParams simple() {
-  HertzAdhesiveParams p;
-  p.roughness = 0.01;
-  p.eps_bar = 0.05;
-  p.kn = 1.0e5;
-  p.f_adh = 2.0;
-  return p;
-}
+HertzAdhesiveParams simple() { return test::round_hertz_adhesive(); }
 // Paper 004's contact: Hertz with adhesion and Coulomb friction mu_s = 0.5 (eq. 16).
 HertzAdhesiveCoulomb hertz(const HertzAdhesiveParams& p) { return {HertzAdhesive(p), {{0.5}}}; }
 RelativeMotion at_rest() { return {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()}; }

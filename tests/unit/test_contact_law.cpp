@@ -42,32 +42,6 @@ TEST(ContactLaw, SoftRepulsionIsOneAlternativeAndCarriesNoHistory) {
   EXPECT_EQ(interaction_range(law), 0.0);
 }
 
-TEST(ContactLaw, EvaluatePairsVisitsOnceAndMatchesTheDirectCall) {
-  HertzAdhesiveParams p;
-  p.roughness = 0.01;
-  p.kn = 1.0e5;
-  p.f_adh = 1.0;
-  const HertzAdhesiveCoulomb direct{HertzAdhesive(p), {{0.5}}};
-  const ContactLaw law = ComposedLaw<HertzAdhesiveCoulomb>{direct, {}};
-  const std::vector<PairGeometry> geometry = {PairGeometry::from(Vec3(2.005, 0.0, 0.0), 1.0, 1.0),
-                                              PairGeometry::from(Vec3(0.0, 2.5, 0.0), 1.0, 1.0),
-                                              PairGeometry::from(Vec3(0.0, 0.0, 2.397), 1.0, 1.4)};
-  const RelativeMotion m{Vec3::Zero(), Vec3(0.1, 0.2, 0.3), Vec3::Zero(), Vec3::Zero()};
-  std::vector<PairHistory> history(3), history_direct(3);
-  std::vector<PairForce> out(3);
-  evaluate_pairs(
-      law, 0, 3, 1e-3, [&](std::size_t k) { return PairState{geometry[k], m}; },
-      [&](std::size_t k) -> PairHistory& { return history[k]; },
-      [&](std::size_t k, const PairForce& f) { out[k] = f; });
-  for (std::size_t k = 0; k < 3; ++k) {
-    const PairForce f = direct(geometry[k], m, 1e-3, history_direct[k]);
-    EXPECT_EQ(f.total_on_j(), out[k].total_on_j());
-    EXPECT_EQ(history[k].in_contact, history_direct[k].in_contact);
-  }
-  EXPECT_TRUE(history[0].in_contact);
-  EXPECT_FALSE(history[1].in_contact);
-}
-
 TEST(ContactLaw, EveryAlternativeValidatesAndReportsItsRange) {
   std::vector<ContactLaw> laws = {ComposedLaw<ContactModel<SoftRepulsion>>{},
                                   ComposedLaw<LinearSpringCoulomb>{},
