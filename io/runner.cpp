@@ -283,7 +283,25 @@ int run_case(const Case& c, const RunOptions& o) {
     constexpr double max_steps = max_run_steps;
     constexpr int slow_steps_allowed = 1000;    // steps in a row at a pace beyond max_steps before the run stops
     int slow_steps = 0;
-    double slow_start_strain = progress_of();
+    double slow_start_strain = progress_of(), slow_start_time = sim.state().time;
+    // Imposed steady (or reversing) stress: a point whose mean rate stays below Sigma / run.jammed.viscosity jams.
+    const bool jam_test = flow.control == FlowControl::stress && !flow.oscillatory();
+    auto end_jammed = [&](double rate, double over_time) {
+      file.write_snapshot(snapshot_of(sim));
+      save();
+      finish_outputs();
+      progress.finish();
+      const double from = write_partial_summary(
+          "jammed", {{"jammed", {{"mean_shear_rate", rate},
+                                 {"over_time", over_time},
+                                 {"threshold", flow.shear_stress / c.run.jammed_viscosity}}}});
+      std::fprintf(stderr,
+                   "jammed: the mean shear rate was %.3g over the last %.4g time units (threshold "
+                   "Sigma/run.jammed.viscosity = %.3g) at strain %.4g; summary.json averages from strain %.4g\n",
+                   rate, over_time, flow.shear_stress / c.run.jammed_viscosity, progress_of(), from);
+      file.close();
+      return exit_jammed;
+    };
     try {
       for (;;) {
         remember_step_start();
@@ -339,6 +357,11 @@ int run_case(const Case& c, const RunOptions& o) {
         // A step or rate that collapsed mid-run (the time step a case implies is checked before it starts).
         if (std::abs(progress_of() - strain) * max_steps < c.run.strain) {
           if (++slow_steps == slow_steps_allowed) {
+            // Under imposed stress a flow that stopped is a jammed point, also before the jamming window closes.
+            const double over = sim.state().time - slow_start_time;
+            const double rate = std::abs(progress_of() - slow_start_strain) / over;
+            if (jam_test && over > 0.0 && rate < flow.shear_stress / c.run.jammed_viscosity)
+              return end_jammed(rate, over);
             std::ostringstream s;
             s << "no progress: the last " << slow_steps << " steps advanced the strain by "
               << std::abs(progress_of() - slow_start_strain) << " in all (time step " << sim.time_step()
@@ -349,6 +372,7 @@ int run_case(const Case& c, const RunOptions& o) {
         } else {
           slow_steps = 0;
           slow_start_strain = progress_of();
+          slow_start_time = sim.state().time;
         }
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
         if (const int sig = stop_signal.load()) {
@@ -360,30 +384,14 @@ int run_case(const Case& c, const RunOptions& o) {
                     << "; continue with: " << restart_command(c, checkpoint_path) << "\n";
           return 128 + sig;
         }
-        if (flow.control == FlowControl::stress && !flow.oscillatory()) {
+        if (jam_test) {
           // Jammed below the yield stress: the mean rate over a window stays below Sigma / jammed_viscosity.
           const double window = c.run.jammed_strain * c.run.jammed_viscosity / flow.shear_stress;
           const SimulationState& st = sim.state();
           if (st.time - clock.jam_window_time >= window) {
-            if (progress_of() - clock.jam_window_strain < c.run.jammed_strain) {
-              const double rate = (progress_of() - clock.jam_window_strain) / (st.time - clock.jam_window_time);
-              file.write_snapshot(snapshot_of(sim));
-              save();
-              finish_outputs();
-              progress.finish();
-              const double from = write_partial_summary(
-                  "jammed", {{"jammed", {{"mean_shear_rate", rate},
-                                         {"over_time", st.time - clock.jam_window_time},
-                                         {"threshold", flow.shear_stress / c.run.jammed_viscosity}}}});
-              std::fprintf(stderr,
-                           "jammed: the mean shear rate was %.3g over the last %.4g time units (threshold "
-                           "Sigma/run.jammed.viscosity = %.3g) at strain %.4g; summary.json averages from strain "
-                           "%.4g\n",
-                           rate, st.time - clock.jam_window_time, flow.shear_stress / c.run.jammed_viscosity,
-                           progress_of(), from);
-              file.close();
-              return exit_jammed;
-            }
+            if (progress_of() - clock.jam_window_strain < c.run.jammed_strain)
+              return end_jammed((progress_of() - clock.jam_window_strain) / (st.time - clock.jam_window_time),
+                                st.time - clock.jam_window_time);
             clock.jam_window_time = st.time;
             clock.jam_window_strain = progress_of();
           }

@@ -141,6 +141,17 @@ TEST(Sweep, StoppedFlowEndsJammedAndBudgetEndsFailed) {
   EXPECT_EQ(t["points"][0]["summary"]["status"], "jammed");
   EXPECT_LT(t["points"][0]["summary"]["jammed"]["mean_shear_rate"].get<double>(), 1.0 / 3.0);
   EXPECT_NE(t["points"][0]["message"].get<std::string>().find("jammed"), std::string::npos);
+  // A flow that stops long before the jamming window closes (3 / 2e-5 time units) trips the no-progress guard
+  // first: under imposed stress, with its mean rate (~2e-6) below Sigma / run.jammed.viscosity, that is a jam too.
+  const std::string stalled = fresh_dir("run_stalled");
+  const Result s = run({"run", restart_case, "--set", "particles.count=60", "--set", "flow.control=stress", "--set",
+                        "flow.shear_stress=2e-5", "--set", "run.jammed.viscosity=3", "--set", "run.jammed.strain=1",
+                        "--set", "run.strain=5", "--out", stalled, "--quiet"});
+  EXPECT_EQ(s.code, 4) << s.err;
+  EXPECT_NE(s.err.find("jammed: the mean shear rate"), std::string::npos) << s.err;
+  const json ss = json::parse(read_text(stalled + "/summary.json"));
+  EXPECT_EQ(ss["status"], "jammed");
+  EXPECT_LT(ss["jammed"]["mean_shear_rate"].get<double>(), 2e-5 / 3.0);
 
   const std::string slow = fresh_dir("sweep_budget");
   const std::string long_case = write_case("long.yaml", "case: " + restart_case + "\nset: {run.strain: 50}\n");
