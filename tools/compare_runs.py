@@ -9,6 +9,7 @@ usage: tools/compare_runs.py RUN_A RUN_B [--tolerance REL]   (REL: differences u
 import json
 import math
 import os
+import signal
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -18,6 +19,9 @@ os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")
 
 SKIPPED_KEYS = {"wall_seconds", "timings", "case", "started", "finished", "version", "command", "threads"}
 
+
+# Read through `| head`: a closed pipe ends the output quietly.
+signal.signal(signal.SIGPIPE, signal.SIG_DFL)
 
 h5py = np = None  # imported in main(), after the arguments are checked
 
