@@ -39,34 +39,11 @@ ContactLaw with_rolling(SchemaReader& r, const Normal& normal, const Friction& f
   return ComposedLaw<ContactModel<Normal, Friction, RollingResistance>>{{normal, friction, rolling}, s};
 }
 
-SurfaceForces read_surface_forces(SchemaReader& r) {
-  SurfaceForces s;
-  if (r.has("repulsion")) {
-    SchemaReader e = r.child("repulsion");
-    ElectrostaticRepulsionParams p;
-    p.force = e.number("force", p.force, Range::non_negative());
-    p.debye_length = e.number("debye_length", p.debye_length, Range::positive());
-    p.cutoff_in_debye = e.number("cutoff_in_debye", p.cutoff_in_debye, Range::positive());
-    e.finish();
-    s.repulsion = ElectrostaticRepulsion{p};
-  }
-  if (r.has("attraction")) {
-    SchemaReader v = r.child("attraction");
-    VanDerWaalsParams p;
-    p.hamaker = v.number("hamaker", p.hamaker, Range::non_negative());
-    p.epsilon_rel = v.number("epsilon", p.epsilon_rel, Range::positive());
-    p.cutoff = v.number("cutoff", p.cutoff, Range::positive());
-    v.finish();
-    s.attraction = VanDerWaals{p};
-  }
-  return s;
-}
-
 // One law from the keys of r: {law, its keys, friction, mu or mu_s, critical_load, rolling, surface forces}.
 // Coulomb friction with mu = 0 is no friction.
 ContactLaw read_law(SchemaReader& r) {
   const std::string law = r.choice("law", "soft_repulsion", names(NormalLaws{}));
-  const SurfaceForces surface = read_surface_forces(r);
+  const SurfaceForces surface = SurfaceForces::read(r);
   std::optional<ContactLaw> out;
   for_each_type(NormalLaws{}, [&]<class N>() {
     if (N::name != law) return;
@@ -159,18 +136,12 @@ YAML::Node contact_to_yaml(const ContactLaw& law) {
   std::visit(
       [&](const auto& l) {
         write_model(n, l.contact);
-        if (l.surface.repulsion) {
-          const auto& p = l.surface.repulsion->p;
-          n["repulsion"]["force"] = number_node(p.force);
-          n["repulsion"]["debye_length"] = number_node(p.debye_length);
-          n["repulsion"]["cutoff_in_debye"] = number_node(p.cutoff_in_debye);
-        }
-        if (l.surface.attraction) {
-          const auto& p = l.surface.attraction->p;
-          n["attraction"]["hamaker"] = number_node(p.hamaker);
-          n["attraction"]["epsilon"] = number_node(p.epsilon_rel);
-          n["attraction"]["cutoff"] = number_node(p.cutoff);
-        }
+        l.surface.for_each([&](const auto& force) {
+          YAML::Node block;
+          YamlWriter w{block};
+          force.write(w);
+          n[std::string(force.name)] = block;
+        });
         for (const auto& [s_i, s_j] : l.pairs.given) {
           YAML::Node e;
           e["species"].push_back(s_i);

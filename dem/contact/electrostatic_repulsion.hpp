@@ -11,8 +11,10 @@
 #pragma once
 #include <cmath>
 #include <string>
+#include <string_view>
 
 #include "core/error.hpp"
+#include "core/range.hpp"
 #include "dem/contact/pair_geometry.hpp"
 
 namespace suspend {
@@ -32,8 +34,25 @@ struct ElectrostaticRepulsionParams {
 };
 
 struct ElectrostaticRepulsion {
+  static constexpr std::string_view name = "repulsion";  // its block in the contact section of a case
   ElectrostaticRepulsionParams p;
   void validate() const { p.validate(); }
+
+  // The `repulsion` block: {force, debye_length, cutoff_in_debye}.
+  template <class Reader>
+  static ElectrostaticRepulsion read(Reader& r) {
+    ElectrostaticRepulsion out;
+    out.p.force = r.number("force", out.p.force, Range::non_negative());
+    out.p.debye_length = r.number("debye_length", out.p.debye_length, Range::positive());
+    out.p.cutoff_in_debye = r.number("cutoff_in_debye", out.p.cutoff_in_debye, Range::positive());
+    return out;
+  }
+  template <class Writer>
+  void write(Writer& w) const {
+    w.number("force", p.force);
+    w.number("debye_length", p.debye_length);
+    w.number("cutoff_in_debye", p.cutoff_in_debye);
+  }
   double range() const { return p.cutoff_in_debye * p.debye_length; }
 
   // Magnitude on j along +n (repulsive) at gap h, for harmonic radius a_bar.

@@ -12,8 +12,10 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <string_view>
 
 #include "core/error.hpp"
+#include "core/range.hpp"
 #include "dem/contact/pair_geometry.hpp"
 
 namespace suspend {
@@ -33,8 +35,25 @@ struct VanDerWaalsParams {
 };
 
 struct VanDerWaals {
+  static constexpr std::string_view name = "attraction";  // its block in the contact section of a case
   VanDerWaalsParams p;
   void validate() const { p.validate(); }
+
+  // The `attraction` block: {hamaker, epsilon, cutoff}.
+  template <class Reader>
+  static VanDerWaals read(Reader& r) {
+    VanDerWaals out;
+    out.p.hamaker = r.number("hamaker", out.p.hamaker, Range::non_negative());
+    out.p.epsilon_rel = r.number("epsilon", out.p.epsilon_rel, Range::positive());
+    out.p.cutoff = r.number("cutoff", out.p.cutoff, Range::positive());
+    return out;
+  }
+  template <class Writer>
+  void write(Writer& w) const {
+    w.number("hamaker", p.hamaker);
+    w.number("epsilon", p.epsilon_rel);
+    w.number("cutoff", p.cutoff);
+  }
   double range() const { return p.cutoff; }
 
   // Magnitude on j along -n (attractive) at gap h, for harmonic radius a_bar.
