@@ -4,14 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
-#include <sstream>
 
 #include "core/error.hpp"
 
 namespace suspend {
-
-using std::numbers::pi;
 
 namespace {
 coupling::KrylovParams krylov_params(const FcmParams& f) {

@@ -78,9 +78,10 @@ void read_species_pairs(SchemaReader& r, int species, ContactLaw& law) {
       e.fail("species", "the pair [" + std::to_string(ij.first) + ", " + std::to_string(ij.second) +
                             "] is given twice; give each species pair once");
     seen.push_back(ij);
-    for (const char* key : {"law", "repulsion", "attraction", "species_pairs"})
-      if (e.has(key))
-        e.fail(key, "a species pair takes the case's law and surface forces; give only the parameters that differ");
+    for (const std::string_view key : {std::string_view("law"), ElectrostaticRepulsion::name, VanDerWaals::name,
+                                       std::string_view("species_pairs")})
+      if (e.has(std::string(key)))
+        e.fail(std::string(key), "a species pair takes the case's law and surface forces; give only the parameters that differ");
     YAML::Node merged = YAML::Clone(r.node());
     merged.remove("species_pairs");
     for (const auto& kv : e.node())

@@ -286,19 +286,18 @@ int run_case(const Case& c, const RunOptions& o) {
     double slow_start_strain = progress_of(), slow_start_time = sim.state().time;
     // Imposed steady (or reversing) stress: a point whose mean rate stays below Sigma / run.jammed.viscosity jams.
     const bool jam_test = flow.control == FlowControl::stress && !flow.oscillatory();
+    const double jam_rate = flow.shear_stress / c.run.jammed_viscosity;
     auto end_jammed = [&](double rate, double over_time) {
       file.write_snapshot(snapshot_of(sim));
       save();
       finish_outputs();
       progress.finish();
       const double from = write_partial_summary(
-          "jammed", {{"jammed", {{"mean_shear_rate", rate},
-                                 {"over_time", over_time},
-                                 {"threshold", flow.shear_stress / c.run.jammed_viscosity}}}});
+          "jammed", {{"jammed", {{"mean_shear_rate", rate}, {"over_time", over_time}, {"threshold", jam_rate}}}});
       std::fprintf(stderr,
                    "jammed: the mean shear rate was %.3g over the last %.4g time units (threshold "
                    "Sigma/run.jammed.viscosity = %.3g) at strain %.4g; summary.json averages from strain %.4g\n",
-                   rate, over_time, flow.shear_stress / c.run.jammed_viscosity, progress_of(), from);
+                   rate, over_time, jam_rate, progress_of(), from);
       file.close();
       return exit_jammed;
     };
@@ -360,7 +359,7 @@ int run_case(const Case& c, const RunOptions& o) {
             // Under imposed stress a flow that stopped is a jammed point, also before the jamming window closes.
             const double over = sim.state().time - slow_start_time;
             const double rate = std::abs(progress_of() - slow_start_strain) / over;
-            if (jam_test && over > 0.0 && rate < flow.shear_stress / c.run.jammed_viscosity)
+            if (jam_test && over > 0.0 && rate < jam_rate)
               return end_jammed(rate, over);
             std::ostringstream s;
             s << "no progress: the last " << slow_steps << " steps advanced the strain by "

@@ -69,7 +69,7 @@ HydroResponse& PairwiseResistanceModel::solve(const HydroLoad& load, double rate
 std::pair<HydroResponse&, HydroResponse&> PairwiseResistanceModel::solve_parts(const HydroLoad& load) {
   const Particles& p = load.particles;
   const double ly = load.box.length().y();
-  zero_.assign(p.size(), Vec3::Zero());
+  if (zero_.size() != p.size()) zero_.assign(p.size(), Vec3::Zero());
   // Velocities, stress and the implicit contact changes are linear in (gammadot, F).
   solver_.solve(p, classes_.of_particle, load.pairs, hydro::ambient_flow(flow_, 1.0, ly), zero_, zero_, out_,
                 load.where, load.implicit);
