@@ -74,14 +74,14 @@ void add_crossval_command(CLI::App& app) {
       std::string before;
       try {
         io::h5::File f = io::h5::File::open(run_file.string(), false);
-        before = io::result_identity(io::parse_case(YAML::Load(io::h5::string_attribute(f.id(), ".", "case")), c.source));
+        before = io::h5::string_attribute(f.id(), ".", "case");
       } catch (const std::exception&) {
         before = "unreadable: true";
       }
-      const std::string now = io::result_identity(c);
-      if (before != now)
-        throw InputError("--out: " + (dir / model).string() + " holds a run of another case (" +
-                         io::yaml_differences(before, now) + "); give another --out or remove it");
+      const std::string changes = io::case_changes(before, io::result_identity(c), io::result_identity);
+      if (!changes.empty())
+        throw InputError("--out: " + (dir / model).string() + " holds a run of another case (" + changes +
+                         "); give another --out or remove it");
     }
     for (const auto& [model, c] : cases) {
       const fs::path out = dir / model;

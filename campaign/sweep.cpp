@@ -15,7 +15,6 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <thread>
-#include <yaml-cpp/yaml.h>
 
 #include "campaign/point_record.hpp"
 #include "campaign/table.hpp"
@@ -59,18 +58,6 @@ std::string eta_text(const fs::path& point_dir) {
   return b;
 }
 
-// A point recorded by an older version is the same point when this version, reading what was recorded, resolves
-// it to the same case: a key the resolved form gained with the value the older form implied (contact.friction:
-// coulomb) is not a change of the campaign.
-bool same_point(const std::string& recorded, const std::string& now) {
-  if (recorded == now) return true;
-  try {
-    return io::result_identity(io::parse_case(YAML::Load(recorded), "the recorded point")) == now;
-  } catch (const std::exception&) {
-    return false;
-  }
-}
-
 struct Job {
   pid_t pid = -1;
   const Point* point = nullptr;
@@ -95,9 +82,9 @@ void check_and_record_points(const Campaign& c, const fs::path& dir) {
       if (!p)
         throw InputError("campaign changed: point " + name + " of " + dir.string() +
                          " is no longer in the campaign (only adding points is allowed; use another --out)");
-      if (!same_point(identity.get<std::string>(), p->identity))
-        throw InputError("campaign changed: point " + name + " now differs in " +
-                         io::yaml_differences(identity.get<std::string>(), p->identity) +
+      const std::string changes = io::case_changes(identity.get<std::string>(), p->identity, io::result_identity);
+      if (!changes.empty())
+        throw InputError("campaign changed: point " + name + " now differs in " + changes +
                          " (only adding points is allowed; use another --out)");
     }
   }

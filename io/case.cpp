@@ -434,6 +434,20 @@ std::string result_identity(const Case& c) {
   return e.c_str();
 }
 
+std::string physics_fingerprint(const Case& c) {
+  YAML::Node n = to_yaml(c);
+  n["run"].remove("strain");
+  n["run"].remove("average_from");
+  n["run"].remove("threads");
+  n["run"].remove("output");
+  n["run"].remove("jammed");  // when to give up, not what is simulated
+  n.remove("title");
+  if (n["hydrodynamics"]["fcm"]) n["hydrodynamics"]["fcm"].remove("cache_dir");  // where, not what
+  YAML::Emitter e;
+  e << n;
+  return e.c_str();
+}
+
 namespace {
 // Every scalar of a YAML tree by dotted key.
 void flatten(const YAML::Node& n, const std::string& prefix, std::map<std::string, std::string>& out) {
@@ -445,6 +459,16 @@ void flatten(const YAML::Node& n, const std::string& prefix, std::map<std::strin
   } else {
     out[prefix] = n.IsScalar() ? n.Scalar() : "~";
   }
+}
+
+// Equal text, or numbers equal to 1e-12 relative (the last digit of a recomputed value is no change).
+bool same_value(const std::string& a, const std::string& b) {
+  if (a == b) return true;
+  char* end_a = nullptr;
+  char* end_b = nullptr;
+  const double x = std::strtod(a.c_str(), &end_a), y = std::strtod(b.c_str(), &end_b);
+  return !a.empty() && !b.empty() && *end_a == '\0' && *end_b == '\0' && std::isfinite(x) && std::isfinite(y) &&
+         std::abs(x - y) <= 1e-12 * std::max(std::abs(x), std::abs(y));
 }
 }  // namespace
 
@@ -460,12 +484,28 @@ std::string yaml_differences(const std::string& old_yaml, const std::string& new
   for (const auto& [k, v] : a) {
     auto it = b.find(k);
     if (it == b.end()) show(k, v, "(absent)");
-    else if (it->second != v) show(k, v, it->second);
+    else if (!same_value(it->second, v)) show(k, v, it->second);
   }
   for (const auto& [k, v] : b)
     if (!a.count(k)) show(k, "(absent)", v);
   if (shown > 4) out += " and " + std::to_string(shown - 4) + " more";
   return out.empty() ? "nothing" : out;
+}
+
+std::string case_changes(const std::string& recorded, const std::string& now, std::string (*resolve)(const Case&)) {
+  if (recorded == now) return "";
+  std::string again;
+  try {
+    again = resolve(parse_case(YAML::Load(recorded), "the recorded case"));
+  } catch (const std::exception&) {
+    try {
+      return yaml_differences(recorded, now);
+    } catch (const std::exception&) {
+      return "the recorded case is unreadable";
+    }
+  }
+  const std::string d = yaml_differences(again, now);
+  return d == "nothing" ? "" : d;
 }
 
 std::string to_yaml_text(const Case& c) {

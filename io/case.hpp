@@ -69,8 +69,18 @@ std::string to_yaml_text(const Case& c);
 // Two runs with the same identity give the same results (bit for bit on the same thread count).
 std::string result_identity(const Case& c);
 
+// The resolved physics of a case (everything but run length, output and threads): checkpoints must match it.
+std::string physics_fingerprint(const Case& c);
+
 // The keys whose values differ between two YAML texts (dotted paths, "key old -> new", at most four named):
 // how refusals name what changed.
 std::string yaml_differences(const std::string& old_yaml, const std::string& new_yaml);
+
+// How a resolved case recorded earlier (a checkpoint's fingerprint, a sweep's point, a run's case), perhaps by an
+// older version, differs from the case now resolved by `resolve` (result_identity, physics_fingerprint) as `now`:
+// "" when it is the same case. The recorded text is read again by this version and resolved, and numbers are
+// compared to 1e-12 relative, so a key the resolved form gained with the value the older form implied
+// (contact.friction: coulomb) or a group recomputed in its last digit is no change.
+std::string case_changes(const std::string& recorded, const std::string& now, std::string (*resolve)(const Case&));
 
 }  // namespace suspend::io

@@ -137,10 +137,11 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     if (!h5::exists(id, "particles/position") || h5::string_attribute(id, ".", "format") != format)
       throw InputError(path + ": not a suspend checkpoint");
     const std::string stored = h5::string_attribute(id, ".", "fingerprint");
-    if (stored != fingerprint)
-      throw InputError(path + ": the checkpoint belongs to another case (" + yaml_differences(stored, fingerprint) +
+    const std::string changes = case_changes(stored, fingerprint, physics_fingerprint);
+    if (!changes.empty())
+      throw InputError(path + ": the checkpoint belongs to another case (" + changes +
                        "); restart with the case and --set values it was written with");
-    c.fingerprint = fingerprint;
+    c.fingerprint = stored;  // as written, for the checksum; the run continues under this version's form
     c.rng = h5::string_attribute(id, ".", "rng");
     c.threads = static_cast<int>(h5::int_attribute(id, ".", "threads"));
     c.state.step = h5::int_attribute(id, ".", "step");
@@ -165,6 +166,7 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     if (h5::exists(id, "checksums/attributes") &&  // absent in checkpoints written before it existed
         h5::read_ints(id, "checksums/attributes") != std::vector<std::int64_t>{attribute_checksum(c, accumulated)})
       throw InputError(path + ": corrupt checkpoint (its attributes do not match their checksum)");
+    c.fingerprint = fingerprint;
     if (c.state.step < 0 || c.clock.series_rows < 0 || c.clock.snapshots < 0 || c.threads < 1)
       throw InputError(path + ": corrupt checkpoint (negative step, row or snapshot count, or no threads)");
     {

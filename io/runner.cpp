@@ -109,20 +109,6 @@ void install_stop_handlers() {
   std::signal(SIGTERM, on_stop_signal);
 }
 
-std::string physics_fingerprint(const Case& c) {
-  YAML::Node n = to_yaml(c);
-  n["run"].remove("strain");
-  n["run"].remove("average_from");
-  n["run"].remove("threads");
-  n["run"].remove("output");
-  n["run"].remove("jammed");  // when to give up, not what is simulated
-  n.remove("title");
-  if (n["hydrodynamics"]["fcm"]) n["hydrodynamics"]["fcm"].remove("cache_dir");  // where, not what
-  YAML::Emitter e;
-  e << n;
-  return e.c_str();
-}
-
 int run_case(const Case& c, const RunOptions& o) {
   const auto started = std::chrono::steady_clock::now();
   const int threads = o.threads > 0 ? o.threads : (c.run.threads > 0 ? static_cast<int>(c.run.threads)

@@ -17,9 +17,6 @@ struct RunOptions {
 // Returns the process exit code: 0 done, 3 numerical failure (state saved), 128 + signal when stopped by a signal.
 int run_case(const Case& c, const RunOptions& options);
 
-// The resolved physics of a case (everything but run length, output and threads): checkpoints must match it.
-std::string physics_fingerprint(const Case& c);
-
 // The command that continues a run from its checkpoint: the case file and its --set overrides, shell-quoted.
 std::string restart_command(const Case& c, const std::string& checkpoint);
 

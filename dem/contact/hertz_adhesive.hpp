@@ -28,6 +28,7 @@
 // Units: lengths in a_1, forces in eta_0 gammadot a_1^2, k_n in eta_0 gammadot a_1^(1/2), k_t in eta_0 gammadot a_1.
 #pragma once
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <string_view>
@@ -47,6 +48,10 @@ struct HertzAdhesiveParams {
   double f_adh = 0.9 * 6.0 * std::numbers::pi;                                 // G_adh = 0.9
   double repulsion_onset = 0.1;      // h_s / h_r
   double repulsion_stiffness = 1.0e2;  // k_s / k_n
+  // Paper 004's groups as the case gave them (NaN when k_n and F_adh were set directly): written back as given, since
+  // recomputed from k_n and F_adh they move in the last digit and a resolved case must read back to itself.
+  double gamma_bar = std::numeric_limits<double>::quiet_NaN();
+  double g_adh = std::numeric_limits<double>::quiet_NaN();
   void validate() const {
     require(roughness, Range::positive(), "contact.roughness");
     require(eps_bar, Range::positive(), "contact.eps_bar");
@@ -67,6 +72,8 @@ inline HertzAdhesiveParams hertz_adhesive_from_groups(double gamma_bar, double g
   p.eps_bar = eps_bar;
   p.kn = 6.0 * std::numbers::pi / (gamma_bar * std::pow(eps_bar * roughness, 1.5));
   p.f_adh = 6.0 * std::numbers::pi * g_adh;
+  p.gamma_bar = gamma_bar;
+  p.g_adh = g_adh;
   p.validate();
   return p;
 }
@@ -139,8 +146,10 @@ class HertzAdhesive {
   void write(Writer& w, bool) const {
     w.number("roughness", p_.roughness);
     w.number("eps_bar", p_.eps_bar);
-    w.number("gamma_bar", 6.0 * std::numbers::pi / (p_.kn * std::pow(p_.eps_bar * p_.roughness, 1.5)));
-    w.number("g_adh", p_.f_adh / (6.0 * std::numbers::pi));
+    w.number("gamma_bar", std::isnan(p_.gamma_bar)
+                              ? 6.0 * std::numbers::pi / (p_.kn * std::pow(p_.eps_bar * p_.roughness, 1.5))
+                              : p_.gamma_bar);
+    w.number("g_adh", std::isnan(p_.g_adh) ? p_.f_adh / (6.0 * std::numbers::pi) : p_.g_adh);
     w.number("repulsion_onset", p_.repulsion_onset);
     w.number("repulsion_stiffness", p_.repulsion_stiffness);
   }

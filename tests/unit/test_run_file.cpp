@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/rng.hpp"
+#include "io/case.hpp"
 #include "io/checkpoint.hpp"
 #include "io/run_file.hpp"
 #include "io/xdmf.hpp"
@@ -155,6 +156,26 @@ TEST(Checkpoint, RefusesOtherCaseCorruptFileAndNaN) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("position of particle 1 is not finite"), std::string::npos) << e.what();
   }
+}
+
+// A checkpoint written by an older version, whose fingerprint lacks a key this version's resolved form has gained
+// with the value the old form implied, continues (the checksum is over the fingerprint as written).
+TEST(Checkpoint, OlderFormOfTheSameCaseContinues) {
+  const Case now_case = parse_case(YAML::Load("particles: {phi: 0.3, count: 20}\ncontact: {law: hertz_adhesive, "
+                                              "gamma_bar: 0.9, g_adh: 1.0}\nrun: {strain: 1}\n"),
+                                   "");
+  const std::string now = physics_fingerprint(now_case);
+  std::string old_form = now;
+  old_form.erase(old_form.find("  friction: coulomb\n"), std::string("  friction: coulomb\n").size());
+  const std::string path = temp("older.h5");
+  Checkpoint c;
+  c.state.particles = some_particles(3);
+  c.fingerprint = old_form;
+  c.rng = serialize(Rng(1));
+  write_checkpoint(path, c);
+  const Checkpoint d = read_checkpoint(path, now);
+  EXPECT_EQ(d.fingerprint, now);
+  EXPECT_EQ(d.state.particles.position[2], c.state.particles.position[2]);
 }
 
 TEST(Xdmf, EveryReferencedDatasetExists) {
