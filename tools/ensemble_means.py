@@ -1,0 +1,72 @@
+#!/usr/bin/env python3
+"""Ensemble means of a campaign's points grouped by one varied key (e.g. seeds of the same case run two ways):
+per group, the mean over its points of eta_r, Sigma^c_12/Sigma_12 and N2, the ensemble standard error
+(sample standard deviation / sqrt(n)), the mean of the points' own block-averaged errors, and the difference
+of each group from the first with its combined error. Made for issue 14's question whether the multi-rate FCM
+step shifts eta_r beyond run-to-run scatter (cases/validation/fcm_multirate_ensemble.yaml).
+
+usage: tools/ensemble_means.py CAMPAIGN.json KEY
+  KEY  the dotted parameter that names the groups (hydrodynamics.fcm.far_field_every)
+"""
+import json
+import math
+import os
+import sys
+
+QUANTITIES = (("eta_r", "eta_r"), ("Sigma_c12/Sigma_12", "Sigma^c_12/Sigma_12"), ("N2", "N2"))
+
+
+def usage(message):
+    sys.stderr.write(f"error: {message}\n" if message else "")
+    sys.stderr.write("usage: tools/ensemble_means.py CAMPAIGN.json KEY\n")
+    sys.exit(2)
+
+
+def main(argv):
+    if len(argv) < 2 or argv[0] in ("-h", "--help"):
+        usage("")
+    path, key = argv[0], argv[1]
+    if not os.path.isfile(path):
+        usage(f"{path}: no such campaign table (give DIR/campaign.json)")
+    if len(argv) > 2:
+        usage(f"unexpected argument '{argv[2]}'")
+    with open(path) as f:
+        table = json.load(f)
+    groups = {}
+    for p in table["points"]:
+        if p.get("status") != "done" or key not in p["parameters"]:
+            continue
+        d = p["derived"]
+        groups.setdefault(str(p["parameters"][key]), []).append(
+            (p["name"], {q: d[q]["mean"] for q, _ in QUANTITIES}, d["eta_r"]["sem"]))
+    if not groups:
+        usage(f"{path}: no finished point varies {key}")
+    first = None
+    print(f"{key:>10} {'n':>3} " + " ".join(f"{label:>26}" for _, label in QUANTITIES) + "  mean block SE of eta_r")
+    for name in sorted(groups, key=lambda g: float(g) if g.replace('.', '', 1).isdigit() else g):
+        rows = groups[name]
+        n = len(rows)
+        stats = {}
+        for q, _ in QUANTITIES:
+            v = [r[1][q] for r in rows]
+            m = sum(v) / n
+            se = math.sqrt(sum((x - m) ** 2 for x in v) / (n - 1) / n) if n > 1 else math.nan
+            stats[q] = (m, se)
+        print(f"{name:>10} {n:>3} " + " ".join(f"{stats[q][0]:>15.4g} +- {stats[q][1]:<7.2g}" for q, _ in QUANTITIES)
+              + f"  {sum(r[2] for r in rows) / n:.3g}")
+        for r in rows:
+            print(f"{'':>14} {r[0]}: eta_r {r[1]['eta_r']:.4g}, ratio {r[1]['Sigma_c12/Sigma_12']:.3f}, N2 {r[1]['N2']:.3g}")
+        if first is None:
+            first = stats
+        else:
+            diffs = []
+            for q, label in QUANTITIES:
+                d = stats[q][0] - first[q][0]
+                err = math.hypot(stats[q][1], first[q][1])
+                diffs.append(f"{label} {d:+.4g} +- {err:.2g} ({d / err if err > 0 else math.nan:+.1f} errors)")
+            print(f"{'':>14} against the first group: " + "; ".join(diffs))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
