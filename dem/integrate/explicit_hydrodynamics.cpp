@@ -17,13 +17,7 @@ constexpr std::ptrdiff_t chunk_particles = 256;  // reduction chunk: fixed, so s
 
 ExplicitHydrodynamics::ExplicitHydrodynamics(std::vector<double> species_radius,
                                              const hydro::LubricationParams& lubrication, LubricationStress stress)
-    : species_radius_(std::move(species_radius)), lubrication_(lubrication), stress_form_(stress) {
-  lubrication_.validate();
-  if (species_radius_.empty()) throw InputError("explicit hydrodynamics: at least one species radius is needed");
-  laws_.reserve(species_radius_.size() * species_radius_.size());
-  for (double a_i : species_radius_)
-    for (double a_j : species_radius_) laws_.emplace_back(a_i, a_j, lubrication_);
-}
+    : law_(std::move(species_radius), lubrication, "explicit hydrodynamics"), stress_form_(stress) {}
 
 std::size_t ExplicitHydrodynamics::memory_bytes() const {
   return start_.capacity() * sizeof(std::uint32_t) + incident_.capacity() * sizeof(std::uint32_t) +
@@ -36,7 +30,7 @@ void ExplicitHydrodynamics::build_incidence(std::size_t n, const std::vector<int
   start_.assign(n + 1, 0);
   std::size_t ends = 0;
   for (const ActivePair& pr : pairs)
-    if (law(species[pr.i], species[pr.j]).active(pr.geometry.gap())) {
+    if (law_.active(pr, species)) {
       ++start_[pr.i + 1];
       ++start_[pr.j + 1];
       ends += 2;
@@ -45,7 +39,7 @@ void ExplicitHydrodynamics::build_incidence(std::size_t n, const std::vector<int
   resize_with_headroom(incident_, ends);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const ActivePair& pr = pairs[k];
-    if (!law(species[pr.i], species[pr.j]).active(pr.geometry.gap())) continue;
+    if (!law_.active(pr, species)) continue;
     incident_[start_[pr.i]++] = static_cast<std::uint32_t>(k);
     incident_[start_[pr.j]++] = static_cast<std::uint32_t>(k);
   }
@@ -62,17 +56,7 @@ void ExplicitHydrodynamics::evaluate(const Particles& p, const std::vector<int>&
   if (species.size() != n || p.position.size() != n || dv.size() != 6 * static_cast<Eigen::Index>(n) ||
       mass.size() != n || moment.size() != n)
     throw InputError("explicit hydrodynamics: species, mass, moment need one entry (dv: six) per particle");
-  const double a_tolerance = 1e-12;
-  for (std::size_t i = 0; i < n; ++i) {
-    const int s = species[i];
-    if (s < 0 || static_cast<std::size_t>(s) >= species_radius_.size() ||
-        std::abs(p.radius[i] - species_radius_[s]) > a_tolerance * species_radius_[s])
-      throw InputError("explicit hydrodynamics: particle " + std::to_string(i) + " has species " +
-                       std::to_string(s) + " and radius " + std::to_string(p.radius[i]) +
-                       " inconsistent with the species radii");
-  }
-  for (const ActivePair& pr : pairs)
-    if (pr.i >= n || pr.j >= n || pr.i == pr.j) throw InputError("explicit hydrodynamics: invalid pair in the list");
+  law_.check(p, species, pairs);
 
   build_incidence(n, species, pairs);
   out.lubricated_pairs = incident_.size() / 2;
@@ -101,7 +85,7 @@ void ExplicitHydrodynamics::evaluate(const Particles& p, const std::vector<int>&
       for (std::uint32_t e = start_[i]; e < start_[i + 1]; ++e) {
         const std::uint32_t k = incident_[e];
         const ActivePair& pr = pairs[k];
-        const hydro::PairLubrication& lub = law(species[pr.i], species[pr.j]);
+        const hydro::PairLubrication& lub = law_(species[pr.i], species[pr.j]);
         const double gap = pr.geometry.gap();
         const Mat3 e_i = flow.strain_rate(p.position[pr.i]), e_j = flow.strain_rate(p.position[pr.j]);
         const hydro::Matrix12 r = lub.resistance(pr.geometry.n, gap);

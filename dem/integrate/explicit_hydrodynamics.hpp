@@ -36,6 +36,7 @@
 #include "dem/hydro/ambient_flow.hpp"
 #include "dem/hydro/lubrication.hpp"
 #include "dem/integrate/resistance_solver.hpp"
+#include "dem/integrate/species_lubrication.hpp"
 #include "dem/pair_forces.hpp"
 
 namespace suspend {
@@ -63,13 +64,10 @@ class ExplicitHydrodynamics {
   std::size_t memory_bytes() const;
 
  private:
-  const hydro::PairLubrication& law(int si, int sj) const { return laws_[si * species_radius_.size() + sj]; }
   void build_incidence(std::size_t n, const std::vector<int>& species, const std::vector<ActivePair>& pairs);
 
-  std::vector<double> species_radius_;
-  hydro::LubricationParams lubrication_;
+  SpeciesLubrication law_;
   LubricationStress stress_form_;
-  std::vector<hydro::PairLubrication> laws_;
 
   std::vector<std::uint32_t> start_;     // N + 1 offsets into incident_
   std::vector<std::uint32_t> incident_;  // per particle, its lubricated pairs (indices into pairs), in pair order

@@ -12,6 +12,13 @@
 
 namespace suspend {
 
+namespace {
+const ResistanceSolverParams& validated(const ResistanceSolverParams& p) {
+  p.validate();
+  return p;
+}
+}  // namespace
+
 void ResistanceSolverParams::validate() const {
   if (!(tolerance > 0.0 && tolerance < 1.0))
     throw InputError("hydrodynamics.solver.tolerance = " + std::to_string(tolerance) + " must be in (0, 1)");
@@ -21,13 +28,7 @@ void ResistanceSolverParams::validate() const {
 }
 
 ResistanceSolver::ResistanceSolver(std::vector<double> species_radius, const ResistanceSolverParams& params)
-    : species_radius_(std::move(species_radius)), params_(params) {
-  params_.validate();
-  if (species_radius_.empty()) throw InputError("resistance solver: at least one species radius is needed");
-  laws_.reserve(species_radius_.size() * species_radius_.size());
-  for (double a_i : species_radius_)
-    for (double a_j : species_radius_) laws_.emplace_back(a_i, a_j, params_.lubrication);
-}
+    : params_(validated(params)), law_(std::move(species_radius), params_.lubrication, "resistance solver") {}
 
 void ResistanceSolver::solve(const Particles& p, const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
                              const std::vector<Vec3>& force, const std::vector<Vec3>& torque, SolveResult& out,
@@ -49,7 +50,7 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
   resize_with_headroom(pair_link_, pairs.size());
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const ActivePair& pr = pairs[k];
-    const bool active = law(species[pr.i], species[pr.j]).active(pr.geometry.gap());
+    const bool active = law_.active(pr, species);
     lubricated_ += active ? 1 : 0;
     if (active || keep_inactive || stiff(implicit, k)) {
       pair_link_[k] = static_cast<std::int32_t>(links_.size());
@@ -72,7 +73,7 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
   for (std::ptrdiff_t l = 0; l < nl; ++l) {
     const std::size_t k = link_pair_[l];
     const ActivePair& pr = pairs[k];
-    const hydro::PairLubrication& lub = law(species[pr.i], species[pr.j]);
+    const hydro::PairLubrication& lub = law_(species[pr.i], species[pr.j]);
     const double gap = pr.geometry.gap();
     hydro::Matrix12 r = lub.resistance(pr.geometry.n, gap);
     strain_[l] = lub.strain_forces(pr.geometry.n, gap, flow.strain_rate(p.position[pr.i]),
@@ -120,16 +121,7 @@ void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species
   const std::size_t n = p.size();
   if (species.size() != n || force.size() != n || torque.size() != n || p.position.size() != n)
     throw InputError("resistance solver: species, force and torque need one entry per particle");
-  const double a_tolerance = 1e-12;
-  for (std::size_t i = 0; i < n; ++i) {
-    const int s = species[i];
-    if (s < 0 || static_cast<std::size_t>(s) >= species_radius_.size() ||
-        std::abs(p.radius[i] - species_radius_[s]) > a_tolerance * species_radius_[s])
-      throw InputError("resistance solver: particle " + std::to_string(i) + " has species " + std::to_string(s) +
-                       " and radius " + std::to_string(p.radius[i]) + " inconsistent with the species radii");
-  }
-  for (const ActivePair& pr : pairs)
-    if (pr.i >= n || pr.j >= n || pr.i == pr.j) throw InputError("resistance solver: invalid pair in the list");
+  law_.check(p, species, pairs);
   if (implicit.enabled() && (implicit.stiffness->size() != pairs.size() || !(implicit.dt >= 0.0)))
     throw InputError("resistance solver: implicit contacts need one stiffness per pair and dt >= 0");
 
@@ -258,7 +250,7 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
       m.dw_j = dv_j.tail<3>();
       m.e_i = flow.strain_rate(p.position[pr.i]);
       m.e_j = flow.strain_rate(p.position[pr.j]);
-      const hydro::PairHydroForce h = law(species[pr.i], species[pr.j]).evaluate(pr.geometry.n, pr.geometry.gap(), m);
+      const hydro::PairHydroForce h = law_(species[pr.i], species[pr.j]).evaluate(pr.geometry.n, pr.geometry.gap(), m);
       pair_stress_[k] = h.stresslet_i + h.stresslet_j;
     }
   }

@@ -42,6 +42,7 @@
 #include "linalg/block_matrix.hpp"
 #include "linalg/conjugate_gradient.hpp"
 #include "dem/integrate/implicit_contacts.hpp"
+#include "dem/integrate/species_lubrication.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "dem/hydrodynamic_model.hpp"
 #include "dem/pair_forces.hpp"
@@ -146,7 +147,6 @@ class ResistanceSolver {
   int pattern_analyses() const { return cholesky_.analyses(); }
 
  private:
-  const hydro::PairLubrication& law(int si, int sj) const { return laws_[si * species_radius_.size() + sj]; }
   void assemble(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
                 const hydro::WavyShear& flow, const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
                 const ImplicitContacts& implicit = {});
@@ -159,9 +159,8 @@ class ResistanceSolver {
   void accumulate_stress(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
                          const hydro::WavyShear& flow, SolveResult& out, const ImplicitContacts& implicit);
 
-  std::vector<double> species_radius_;
   ResistanceSolverParams params_;
-  std::vector<hydro::PairLubrication> laws_;
+  SpeciesLubrication law_;
 
   // Per link (pair with a block in the matrix): its pair index, its own diagonal contributions and strain forces.
   std::vector<BlockLink> links_;
