@@ -42,7 +42,7 @@ void KrylovParams::validate() const {
   if (max_iterations < 1) throw InputError("fcm.krylov_max_iterations must be at least 1");
   if (!(preconditioner_cutoff >= 2.0)) throw InputError("fcm.preconditioner_cutoff must be >= 2");
   if (!(inner_tolerance > 0.0 && inner_tolerance < 1.0)) throw InputError("fcm.inner_tolerance must lie in (0, 1)");
-  if (inner_max_iterations < 1) throw InputError("fcm.inner_max_iterations must be at least 1");
+  if (inner_max_iterations < 1) throw InputError("hydrodynamics.fcm.preconditioner_iterations must be at least 1");
   if (!(lagged_tolerance > 0.0 && lagged_tolerance < 1.0))
     throw InputError("fcm.lagged_tolerance must lie in (0, 1)");
   if (far_field_every < 1) throw InputError("fcm.far_field_every must be at least 1");

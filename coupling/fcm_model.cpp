@@ -16,6 +16,7 @@ coupling::KrylovParams krylov_params(const FcmParams& f) {
   k.max_iterations = f.max_iterations;
   k.warm_start = f.warm_start;
   k.preconditioner_cutoff = f.preconditioner_cutoff;
+  k.inner_max_iterations = f.preconditioner_iterations;
   k.far_field_every = f.far_field_every;
   k.lagged_cutoff = f.lagged_cutoff;
   k.lagged_tolerance = f.lagged_tolerance;

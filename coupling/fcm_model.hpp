@@ -36,6 +36,7 @@ struct FcmParams {
   bool warm_start = true;          // start from the previous steps' velocities and stresslets (extrapolated);
                                    // SimulationState::warm_start: CoupledMobility::warm_start_state
   double preconditioner_cutoff = 2.2;  // s' below which pairs enter the GMRES near-field preconditioner
+  int preconditioner_iterations = 5;   // its inner block-SGS CG iterations (KrylovParams::inner_max_iterations)
   // Multi-rate stepping: the full FCM solve at steps that are multiples of this, the lagged far field between
   // (coupled_mobility.hpp "Lagged far field"; 1: every step; docs/coupling.md section 3b has the measured errors).
   int far_field_every = 1;

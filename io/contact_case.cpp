@@ -32,8 +32,9 @@ void for_each_type(TypeList<T...>, Fn&& fn) {
 
 template <class Normal, class Friction>
 ContactLaw with_rolling(SchemaReader& r, const Normal& normal, const Friction& friction, const SurfaceForces& s) {
-  if (!r.has("rolling")) return ComposedLaw<ContactModel<Normal, Friction>>{{normal, friction, {}}, s};
-  SchemaReader rr = r.child("rolling");
+  const std::string block(RollingResistance::name);  // the law's own name is its case block
+  if (!r.has(block)) return ComposedLaw<ContactModel<Normal, Friction>>{{normal, friction, {}}, s};
+  SchemaReader rr = r.child(block);
   const RollingResistance rolling = RollingResistance::read(rr, normal.secant_stiffness() / 100.0);
   rr.finish();
   return ComposedLaw<ContactModel<Normal, Friction, RollingResistance>>{{normal, friction, rolling}, s};
@@ -113,7 +114,7 @@ void write_model(YAML::Node& n, const Model& c) {
     YAML::Node rolling;
     YamlWriter rw{rolling};
     c.rolling.write(rw);
-    n["rolling"] = rolling;
+    n[std::string(RollingResistance::name)] = rolling;
   }
 }
 
