@@ -61,7 +61,9 @@ def sigma_colour(sigma, sigmas):
 
 def save(fig, out, name):
     for ext in ("png", "svg"):
-        fig.savefig(os.path.join(out, name + "." + ext), dpi=130, bbox_inches="tight")
+        # No date and fixed element ids: a figure redrawn from the same table is the same file (small diffs).
+        meta = {"Date": None} if ext == "svg" else {"Software": None}
+        fig.savefig(os.path.join(out, name + "." + ext), dpi=130, bbox_inches="tight", metadata=meta)
 
 
 def fitted(fits):
@@ -224,6 +226,7 @@ def main(argv):
     require("matplotlib", "numpy")
     import matplotlib
     matplotlib.use("Agg")
+    matplotlib.rcParams["svg.hashsalt"] = "suspend"
     methods = load(results)
     if not methods:
         usage("no METHOD/campaign.json with METHOD/phim.json under '%s' (run suspend sweep, then suspend phim)" % results)
