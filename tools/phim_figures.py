@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Figures of a phi_m(sigma*) campaign, after paper 004 (Orsi et al.): Fig. 15 (phi_m against sigma*, every method on
-one plot, with the paper's non-adhesive limits), Fig. 11 (eta_r against phi per sigma*, with the Maron-Pierce fits),
+one plot, with the paper's non-adhesive limits; where a jammed point lies below the Maron-Pierce fit, the bracket
+between the densest flowing and the least dense jammed point instead), Fig. 11 (eta_r against phi per sigma*, with the Maron-Pierce fits),
 Fig. 14 (eta_r against phi/phi_m), Figs. 16-19 (contact-stress ratios against phi/phi_m) and Fig. 22 (mu(J)).
 
 usage: tools/phim_figures.py RESULTS_DIR [--out FIGURE_DIR]
@@ -74,28 +75,52 @@ def sigma_of(fit):
     return math.inf if fit["sigma_star"] is None else fit["sigma_star"]
 
 
+def bracket(fit):
+    """(densest flowing phi, least dense jammed phi) when a jammed point lies below the fitted phi_m (or there is no
+    fit): the campaign's data then place phi_m in that interval, and the fit, which extrapolates past them, is not the
+    result."""
+    jammed = fit.get("jammed_phi") or []
+    if not jammed or (fit.get("phi_m") is not None and not fit.get("jammed_below_phi_m")):
+        return None
+    hi = min(jammed)
+    below = [p[0] for p in fit.get("data") or [] if p[0] < hi]
+    return (max(below), hi) if below else None
+
+
 def figure_15(methods, out):
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
-    all_mu = sorted({f["mu_s"] for _, fits in methods.values() for f in fitted(fits)} | set(PAPER_NON_ADHESIVE))
-    finite_max = max([sigma_of(f) for _, fits in methods.values() for f in fitted(fits) if sigma_of(f) < math.inf]
-                     + [10.0])
+    shown = [f for _, fits in methods.values() for f in fits["fits"] if f.get("phi_m") is not None or bracket(f)]
+    all_mu = sorted({f["mu_s"] for f in shown} | set(PAPER_NON_ADHESIVE))
+    finite_max = max([sigma_of(f) for f in shown if sigma_of(f) < math.inf] + [10.0])
     x_inf = finite_max * 3.0  # where the non-adhesive limit is drawn
+    bracket_label = "flowing below, jammed above (fit overshoots)"
     for method, (_, fits) in methods.items():
         style = METHOD_STYLE.get(method, dict(marker="^", linestyle=":", fillstyle="full"))
-        for mu in sorted({f["mu_s"] for f in fitted(fits)}):
-            group = sorted((f for f in fitted(fits) if f["mu_s"] == mu), key=sigma_of)
+        for mu in sorted({f["mu_s"] for f in shown if f in fits["fits"]}):
+            group = sorted((f for f in fits["fits"] if f["mu_s"] == mu and f in shown), key=sigma_of)
             x = [x_inf if sigma_of(f) == math.inf else sigma_of(f) for f in group]
-            ax.errorbar(x, [f["phi_m"] for f in group], yerr=[f["phi_m_err"] for f in group], color=mu_colour(mu, all_mu),
-                        capsize=3, label="%s, $\\mu_s$ = %g" % (method, mu), **style)
+            y, err = [], []
+            for f in group:
+                b = bracket(f)
+                y.append(0.5 * (b[0] + b[1]) if b else f["phi_m"])
+                err.append(0.5 * (b[1] - b[0]) if b else f["phi_m_err"])
+            colour = mu_colour(mu, all_mu)
+            ax.errorbar(x, y, yerr=err, color=colour, capsize=3, label="%s, $\\mu_s$ = %g" % (method, mu), **style)
+            for xi, f in zip(x, group):
+                b = bracket(f)
+                if b:
+                    ax.vlines(xi, b[0], b[1], color=colour, linewidth=5, alpha=0.45, label=bracket_label)
+                    bracket_label = None
     for mu, phi in PAPER_NON_ADHESIVE.items():
         ax.axhline(phi, color=mu_colour(mu, all_mu), linestyle=":", linewidth=1)
         ax.annotate("paper 004, $\\mu_s$ = %g, no adhesion" % mu, (0.55, phi), fontsize=7, va="bottom",
                     color=mu_colour(mu, all_mu))
     ax.axvspan(0.7, 0.8, color="0.85", zorder=0)
     ax.annotate("paper 004: $\\mu_s \\geq 0.3$ curves\nmeet near 0.5", (0.82, 0.49), fontsize=7)
-    lowest = min([f["phi_m"] - f["phi_m_err"] for _, fits in methods.values() for f in fitted(fits)] + [0.47])
-    ax.set_ylim(lowest - 0.01, 0.67)
+    lowest = min([bracket(f)[0] if bracket(f) else f["phi_m"] - f["phi_m_err"] for f in shown] + [0.47])
+    highest = max([f["phi_m"] + f["phi_m_err"] for f in shown if not bracket(f)] + [0.67])
+    ax.set_ylim(lowest - 0.01, highest + 0.01)
     ax.set_xscale("log")
     ax.set_xlim(0.5, x_inf * 1.5)
     ax.set_xticks([1, 10, x_inf])
