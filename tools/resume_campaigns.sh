@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Resumes the project's long campaigns on this machine, in the background, one after the other on both cores:
+# the issue-14 seed ensemble (results/multirate), then the pairwise phi_m campaign (results/phim/pairwise), then the
+# FCM one once its table exists. A campaign folder under RUNS that a new machine lacks is first rebuilt from its
+# committed table (tools/restore_campaign.py), so only unfinished points run. The binary is copied to
+# RUNS/bin/suspend-campaign, so that rebuilding build/ meanwhile does not change what runs. One background job
+# runs the sweeps in turn (two sweeps started side by side share the cores, and `nice` does not order jobs
+# started in different sessions). Logs: RUNS/NAME.log; stop with `pkill -f suspend-campaign`.
+# usage: tools/resume_campaigns.sh [SUSPEND (default build/bin/suspend)] [RUNS (default runs)]
+set -euo pipefail
+if [[ ${1:-} == -h || ${1:-} == --help ]]; then awk 'NR > 1 && !/^#/ {exit} NR > 1 {sub(/^# ?/, ""); print}' "$0"; exit 0; fi
+root=$(cd "$(dirname "$0")/.." && pwd)
+suspend=${1:-$root/build/bin/suspend}
+runs=${2:-$root/runs}
+if [[ ! -x $suspend ]]; then echo "error: $suspend not found; build first (see README)" >&2; exit 2; fi
+mkdir -p "$runs/bin"
+cp "$suspend" "$runs/bin/suspend-campaign"
+# name | campaign file | committed table
+campaigns=(
+  "multirate|$root/cases/validation/fcm_multirate_ensemble.yaml|$root/results/multirate/campaign.json"
+  "phim_pairwise|$root/cases/phim/pairwise_campaign.yaml|$root/results/phim/pairwise/campaign.json"
+  "phim_fcm|$root/cases/phim/fcm_campaign.yaml|$root/results/phim/fcm/campaign.json"
+)
+queue=()
+for entry in "${campaigns[@]}"; do
+  IFS='|' read -r name file table <<< "$entry"
+  [[ -f $table ]] || continue
+  if [[ ! -d $runs/$name/points ]]; then
+    /usr/bin/python3 "$root/tools/restore_campaign.py" "$table" "$runs/$name"
+  fi
+  queue+=("$name|$file")
+done
+export OMP_WAIT_POLICY=passive HDF5_USE_FILE_LOCKING=FALSE
+(
+  for entry in "${queue[@]}"; do
+    IFS='|' read -r name file <<< "$entry"
+    "$runs/bin/suspend-campaign" sweep "$file" --out "$runs/$name" --jobs 2 --threads 1 --quiet >> "$runs/$name.log" 2>&1 || true
+  done
+) < /dev/null > /dev/null 2>&1 &
+disown
+echo "resuming in the background: ${queue[*]%%|*} (logs in $runs/NAME.log)"
