@@ -87,28 +87,36 @@ def bracket(fit):
     return (max(below), hi) if below else None
 
 
+def drawn_phi_m(fit):
+    """What Fig. 15 draws for a group: (phi_m, its error bar, the bracket or None); the bracket's middle and half
+    width where the data contradict the fit, the fit otherwise; None for a group with neither."""
+    b = bracket(fit)
+    if b:
+        return 0.5 * (b[0] + b[1]), 0.5 * (b[1] - b[0]), b
+    if fit.get("phi_m") is not None:
+        return fit["phi_m"], fit["phi_m_err"], None
+    return None
+
+
 def figure_15(methods, out):
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
-    shown = [f for _, fits in methods.values() for f in fits["fits"] if f.get("phi_m") is not None or bracket(f)]
-    all_mu = sorted({f["mu_s"] for f in shown} | set(PAPER_NON_ADHESIVE))
-    finite_max = max([sigma_of(f) for f in shown if sigma_of(f) < math.inf] + [10.0])
+    drawn = {method: [(f, drawn_phi_m(f)) for f in fits["fits"] if drawn_phi_m(f)]
+             for method, (_, fits) in methods.items()}
+    shown = [pair for pairs in drawn.values() for pair in pairs]
+    all_mu = sorted({f["mu_s"] for f, _ in shown} | set(PAPER_NON_ADHESIVE))
+    finite_max = max([sigma_of(f) for f, _ in shown if sigma_of(f) < math.inf] + [10.0])
     x_inf = finite_max * 3.0  # where the non-adhesive limit is drawn
     bracket_label = "flowing below, jammed above (fit overshoots)"
-    for method, (_, fits) in methods.items():
+    for method, pairs in drawn.items():
         style = METHOD_STYLE.get(method, dict(marker="^", linestyle=":", fillstyle="full"))
-        for mu in sorted({f["mu_s"] for f in shown if f in fits["fits"]}):
-            group = sorted((f for f in fits["fits"] if f["mu_s"] == mu and f in shown), key=sigma_of)
-            x = [x_inf if sigma_of(f) == math.inf else sigma_of(f) for f in group]
-            y, err = [], []
-            for f in group:
-                b = bracket(f)
-                y.append(0.5 * (b[0] + b[1]) if b else f["phi_m"])
-                err.append(0.5 * (b[1] - b[0]) if b else f["phi_m_err"])
+        for mu in sorted({f["mu_s"] for f, _ in pairs}):
+            group = sorted(((f, d) for f, d in pairs if f["mu_s"] == mu), key=lambda pair: sigma_of(pair[0]))
+            x = [x_inf if sigma_of(f) == math.inf else sigma_of(f) for f, _ in group]
             colour = mu_colour(mu, all_mu)
-            ax.errorbar(x, y, yerr=err, color=colour, capsize=3, label="%s, $\\mu_s$ = %g" % (method, mu), **style)
-            for xi, f in zip(x, group):
-                b = bracket(f)
+            ax.errorbar(x, [d[0] for _, d in group], yerr=[d[1] for _, d in group], color=colour, capsize=3,
+                        label="%s, $\\mu_s$ = %g" % (method, mu), **style)
+            for xi, (_, (_, _, b)) in zip(x, group):
                 if b:
                     ax.vlines(xi, b[0], b[1], color=colour, linewidth=5, alpha=0.45, label=bracket_label)
                     bracket_label = None
@@ -118,8 +126,8 @@ def figure_15(methods, out):
                     color=mu_colour(mu, all_mu))
     ax.axvspan(0.7, 0.8, color="0.85", zorder=0)
     ax.annotate("paper 004: $\\mu_s \\geq 0.3$ curves\nmeet near 0.5", (0.82, 0.49), fontsize=7)
-    lowest = min([bracket(f)[0] if bracket(f) else f["phi_m"] - f["phi_m_err"] for f in shown] + [0.47])
-    highest = max([f["phi_m"] + f["phi_m_err"] for f in shown if not bracket(f)] + [0.67])
+    lowest = min([d[2][0] if d[2] else d[0] - d[1] for _, d in shown] + [0.47])
+    highest = max([d[0] + d[1] for _, d in shown if not d[2]] + [0.67])
     ax.set_ylim(lowest - 0.01, highest + 0.01)
     ax.set_xscale("log")
     ax.set_xlim(0.5, x_inf * 1.5)
