@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Resumes the project's long campaigns on this machine, in the background, one after the other on both cores:
-# the issue-14 seed ensemble (results/multirate), then the pairwise phi_m campaign (results/phim/pairwise), then the
-# FCM one once its table exists. A campaign folder under RUNS that a new machine lacks is first rebuilt from its
-# committed table (tools/restore_campaign.py), so only unfinished points run. The binary is copied to
-# RUNS/bin/suspend-campaign, so that rebuilding build/ meanwhile does not change what runs. One background job
-# runs the sweeps in turn (two sweeps started side by side share the cores, and `nice` does not order jobs
-# started in different sessions). Logs: RUNS/NAME.log; stop with `pkill -f suspend-campaign`.
+# the issue-14 seed ensemble (results/multirate), the FCM phi_m campaign (results/phim/fcm), then the pairwise one
+# (results/phim/pairwise); a campaign runs when its committed table or its folder under RUNS exists. A campaign
+# folder that a new machine lacks is first rebuilt from its committed table (tools/restore_campaign.py), so only
+# unfinished points run. The binary is copied to RUNS/bin/suspend-campaign, so that rebuilding build/ meanwhile
+# does not change what runs. One background job runs the sweeps in turn (two sweeps started side by side share the
+# cores, and `nice` does not order jobs started in different sessions).
+# Logs: RUNS/NAME.log; stop with `pkill -f suspend-campaign`.
 # usage: tools/resume_campaigns.sh [SUSPEND (default build/bin/suspend)] [RUNS (default runs)]
 set -euo pipefail
 if [[ ${1:-} == -h || ${1:-} == --help ]]; then awk 'NR > 1 && !/^#/ {exit} NR > 1 {sub(/^# ?/, ""); print}' "$0"; exit 0; fi
@@ -18,13 +19,13 @@ cp "$suspend" "$runs/bin/suspend-campaign"
 # name | campaign file | committed table
 campaigns=(
   "multirate|$root/cases/validation/fcm_multirate_ensemble.yaml|$root/results/multirate/campaign.json"
-  "phim_pairwise|$root/cases/phim/pairwise_campaign.yaml|$root/results/phim/pairwise/campaign.json"
   "phim_fcm|$root/cases/phim/fcm_campaign.yaml|$root/results/phim/fcm/campaign.json"
+  "phim_pairwise|$root/cases/phim/pairwise_campaign.yaml|$root/results/phim/pairwise/campaign.json"
 )
 queue=()
 for entry in "${campaigns[@]}"; do
   IFS='|' read -r name file table <<< "$entry"
-  [[ -f $table ]] || continue
+  [[ -f $table || -d $runs/$name/points ]] || continue
   if [[ ! -d $runs/$name/points ]]; then
     /usr/bin/python3 "$root/tools/restore_campaign.py" "$table" "$runs/$name"
   fi
