@@ -67,10 +67,6 @@ def save(fig, out, name):
         fig.savefig(os.path.join(out, name + "." + ext), dpi=130, bbox_inches="tight", metadata=meta)
 
 
-def fitted(fits):
-    return [f for f in fits["fits"] if f.get("phi_m") is not None]
-
-
 def sigma_of(fit):
     return math.inf if fit["sigma_star"] is None else fit["sigma_star"]
 
@@ -171,10 +167,11 @@ def figure_11(methods, out):
 
 
 def reduced_points(methods):
-    """(method, mu_s, sigma*, phi/phi_m, derived) of every done point whose group was fitted."""
+    """(method, mu_s, sigma*, phi/phi_m, derived) of every done point whose group has a phi_m; phi_m is the one
+    Fig. 15 draws (the bracket's middle where a jammed point contradicts the fit), so both figures agree."""
     rows = []
     for method, (table, fits) in methods.items():
-        phim = {(f["mu_s"], sigma_of(f)): f["phi_m"] for f in fitted(fits)}
+        phim = {(f["mu_s"], sigma_of(f)): drawn_phi_m(f)[0] for f in fits["fits"] if drawn_phi_m(f)}
         for p in table["points"]:
             s = group_sigma(p)
             key = (p["case"]["mu_s"], s)
