@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Ensemble means of a campaign's points grouped by one varied key (e.g. seeds of the same case run two ways):
 per group, the mean over its points of eta_r, Sigma^c_12/Sigma_12 and N2, the ensemble standard error
-(sample standard deviation / sqrt(n)), the mean of the points' own block-averaged errors, and the difference
-of each group from the first with its combined error. Made for issue 14's question whether the multi-rate FCM
+(sample standard deviation / sqrt(n)), the mean of the points' own block-averaged errors, the difference
+of each group from the first with its combined error, and the mean difference over twins (points whose other
+parameters, e.g. the seed, are equal) with its standard error. Made for issue 14's question whether the multi-rate FCM
 step shifts eta_r beyond run-to-run scatter (cases/validation/fcm_multirate_ensemble.yaml).
 
 usage: tools/ensemble_means.py CAMPAIGN.json KEY
@@ -37,11 +38,13 @@ def main(argv):
         if p.get("status") != "done" or key not in p["parameters"]:
             continue
         d = p["derived"]
+        twin = tuple(sorted((k, str(v)) for k, v in p["parameters"].items() if k != key))  # e.g. the seed
         groups.setdefault(str(p["parameters"][key]), []).append(
-            (p["name"], {q: d[q]["mean"] for q, _ in QUANTITIES}, d["eta_r"]["sem"]))
+            (p["name"], {q: d[q]["mean"] for q, _ in QUANTITIES}, d["eta_r"]["sem"], twin))
     if not groups:
         usage(f"{path}: no finished point varies {key}")
     first = None
+    first_rows = None
     print(f"{key:>10} {'n':>3} " + " ".join(f"{label:>26}" for _, label in QUANTITIES) + "  mean block SE of eta_r")
     for name in sorted(groups, key=lambda g: float(g) if g.replace('.', '', 1).isdigit() else g):
         rows = groups[name]
@@ -57,7 +60,7 @@ def main(argv):
         for r in rows:
             print(f"{'':>14} {r[0]}: eta_r {r[1]['eta_r']:.4g}, ratio {r[1]['Sigma_c12/Sigma_12']:.3f}, N2 {r[1]['N2']:.3g}")
         if first is None:
-            first = stats
+            first, first_rows = stats, {r[3]: r[1] for r in rows}
         else:
             diffs = []
             for q, label in QUANTITIES:
@@ -65,6 +68,17 @@ def main(argv):
                 err = math.hypot(stats[q][1], first[q][1])
                 diffs.append(f"{label} {d:+.4g} +- {err:.2g} ({d / err if err > 0 else math.nan:+.1f} errors)")
             print(f"{'':>14} against the first group: " + "; ".join(diffs))
+            # Paired: the same other parameters (packing) run both ways; the pair's shared start and history
+            # cancel from the difference, so this is the sharper test of a shift.
+            pairs = [(r[1], first_rows[r[3]]) for r in rows if r[3] in first_rows]
+            if len(pairs) > 1:
+                diffs = []
+                for q, label in QUANTITIES:
+                    v = [a[q] - b[q] for a, b in pairs]
+                    m = sum(v) / len(v)
+                    se = math.sqrt(sum((x - m) ** 2 for x in v) / (len(v) - 1) / len(v))
+                    diffs.append(f"{label} {m:+.4g} +- {se:.2g} ({m / se if se > 0 else math.nan:+.1f} errors)")
+                print(f"{'':>14} paired with the first group ({len(pairs)} twins): " + "; ".join(diffs))
     return 0
 
 

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Resumes the project's long campaigns on this machine, in the background, one after the other on both cores:
-# the issue-14 seed ensemble (results/multirate), the FCM phi_m campaign (results/phim/fcm), then the pairwise one
-# (results/phim/pairwise); a campaign runs when its committed table or its folder under RUNS exists. A campaign
-# folder that a new machine lacks is first rebuilt from its committed table (tools/restore_campaign.py), so only
-# unfinished points run. The binary is copied to RUNS/bin/suspend-campaign, so that rebuilding build/ meanwhile
-# does not change what runs. One background job runs the sweeps in turn (two sweeps started side by side share the
-# cores, and `nice` does not order jobs started in different sessions).
+# the issue-14 seed ensembles (results/multirate, rate control; results/multirate_stress, the FCM campaign's case),
+# the FCM phi_m campaign (results/phim/fcm), then the pairwise one (results/phim/pairwise). A campaign folder that a new machine lacks is first rebuilt from the committed table
+# where there is one (tools/restore_campaign.py), so only unfinished points run (a finished campaign costs
+# nothing). The binary is copied to RUNS/bin/suspend-campaign, so that rebuilding build/ meanwhile does not change
+# what runs. One background job runs the sweeps in turn (two sweeps started side by side share the cores, and
+# `nice` does not order jobs started in different sessions).
 # Logs: RUNS/NAME.log; stop with `pkill -f suspend-campaign`.
 # usage: tools/resume_campaigns.sh [SUSPEND (default build/bin/suspend)] [RUNS (default runs)]
 set -euo pipefail
@@ -19,14 +19,14 @@ cp "$suspend" "$runs/bin/suspend-campaign"
 # name | campaign file | committed table
 campaigns=(
   "multirate|$root/cases/validation/fcm_multirate_ensemble.yaml|$root/results/multirate/campaign.json"
+  "multirate_stress|$root/cases/validation/fcm_multirate_stress.yaml|$root/results/multirate_stress/campaign.json"
   "phim_fcm|$root/cases/phim/fcm_campaign.yaml|$root/results/phim/fcm/campaign.json"
   "phim_pairwise|$root/cases/phim/pairwise_campaign.yaml|$root/results/phim/pairwise/campaign.json"
 )
 queue=()
 for entry in "${campaigns[@]}"; do
   IFS='|' read -r name file table <<< "$entry"
-  [[ -f $table || -d $runs/$name/points ]] || continue
-  if [[ ! -d $runs/$name/points ]]; then
+  if [[ -f $table && ! -d $runs/$name/points ]]; then
     /usr/bin/python3 "$root/tools/restore_campaign.py" "$table" "$runs/$name"
   fi
   queue+=("$name|$file")
