@@ -381,7 +381,10 @@ int run_case(const Case& c, const RunOptions& o) {
             clock.jam_window_strain = progress_of();
           }
         }
-        if (progress_of() >= clock.next_checkpoint - eps || wall >= every.checkpoint_seconds) {
+        // Not at run.strain: the end writes summary.json, then that checkpoint (a checkpoint at run.strain without
+        // its summary could not be continued).
+        if (progress_of() < c.run.strain - eps &&
+            (progress_of() >= clock.next_checkpoint - eps || wall >= every.checkpoint_seconds)) {
           clock.next_checkpoint = next_multiple(progress_of(), every.checkpoint_every);
           save();
           wall0 = std::chrono::steady_clock::now();
