@@ -3,8 +3,8 @@
 per group, the mean over its points of eta_r, Sigma^c_12/Sigma_12 and N2, the ensemble standard error
 (sample standard deviation / sqrt(n)), the mean of the points' own block-averaged errors, the difference
 of each group from the first with its combined error, and the mean difference over twins (points whose other
-parameters, e.g. the seed, are equal) with its standard error. Made for issue 14's question whether the multi-rate FCM
-step shifts eta_r beyond run-to-run scatter (cases/validation/fcm_multirate_ensemble.yaml).
+parameters, e.g. the seed, are equal) with its standard error. Made for issue 14's question whether the
+multi-rate FCM step shifts eta_r beyond run-to-run scatter (cases/validation/fcm_multirate_ensemble.yaml).
 
 usage: tools/ensemble_means.py CAMPAIGN.json KEY
   KEY  the dotted parameter that names the groups (hydrodynamics.fcm.far_field_every)
@@ -15,6 +15,13 @@ import os
 import sys
 
 QUANTITIES = (("eta_r", "eta_r"), ("Sigma_c12/Sigma_12", "Sigma^c_12/Sigma_12"), ("N2", "N2"))
+
+
+def mean_and_error(values):
+    """Mean and its standard error (sample standard deviation / sqrt(n); nan for one value)."""
+    n = len(values)
+    m = sum(values) / n
+    return m, (math.sqrt(sum((x - m) ** 2 for x in values) / (n - 1) / n) if n > 1 else math.nan)
 
 
 def usage(message):
@@ -49,12 +56,7 @@ def main(argv):
     for name in sorted(groups, key=lambda g: float(g) if g.replace('.', '', 1).isdigit() else g):
         rows = groups[name]
         n = len(rows)
-        stats = {}
-        for q, _ in QUANTITIES:
-            v = [r[1][q] for r in rows]
-            m = sum(v) / n
-            se = math.sqrt(sum((x - m) ** 2 for x in v) / (n - 1) / n) if n > 1 else math.nan
-            stats[q] = (m, se)
+        stats = {q: mean_and_error([r[1][q] for r in rows]) for q, _ in QUANTITIES}
         print(f"{name:>10} {n:>3} " + " ".join(f"{stats[q][0]:>15.4g} +- {stats[q][1]:<7.2g}" for q, _ in QUANTITIES)
               + f"  {sum(r[2] for r in rows) / n:.3g}")
         for r in rows:
@@ -74,9 +76,7 @@ def main(argv):
             if len(pairs) > 1:
                 diffs = []
                 for q, label in QUANTITIES:
-                    v = [a[q] - b[q] for a, b in pairs]
-                    m = sum(v) / len(v)
-                    se = math.sqrt(sum((x - m) ** 2 for x in v) / (len(v) - 1) / len(v))
+                    m, se = mean_and_error([a[q] - b[q] for a, b in pairs])
                     diffs.append(f"{label} {m:+.4g} +- {se:.2g} ({m / se if se > 0 else math.nan:+.1f} errors)")
                 print(f"{'':>14} paired with the first group ({len(pairs)} twins): " + "; ".join(diffs))
     return 0

@@ -97,7 +97,7 @@ def drawn_phi_m(fit):
 def figure_15(methods, out):
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
-    drawn = {method: [(f, drawn_phi_m(f)) for f in fits["fits"] if drawn_phi_m(f)]
+    drawn = {method: [(f, d) for f in fits["fits"] if (d := drawn_phi_m(f))]
              for method, (_, fits) in methods.items()}
     shown = [pair for pairs in drawn.values() for pair in pairs]
     all_mu = sorted({f["mu_s"] for f, _ in shown} | set(PAPER_NON_ADHESIVE))
@@ -171,7 +171,7 @@ def reduced_points(methods):
     Fig. 15 draws (the bracket's middle where a jammed point contradicts the fit), so both figures agree."""
     rows = []
     for method, (table, fits) in methods.items():
-        phim = {(f["mu_s"], sigma_of(f)): drawn_phi_m(f)[0] for f in fits["fits"] if drawn_phi_m(f)}
+        phim = {(f["mu_s"], sigma_of(f)): d[0] for f in fits["fits"] if (d := drawn_phi_m(f))}
         for p in table["points"]:
             s = group_sigma(p)
             key = (p["case"]["mu_s"], s)

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Resumes the project's long campaigns on this machine, in the background, one after the other on both cores:
 # the issue-14 seed ensembles (results/multirate, rate control; results/multirate_stress, the FCM campaign's case),
-# the FCM phi_m campaign (results/phim/fcm), then the pairwise one (results/phim/pairwise). A campaign folder that a new machine lacks is first rebuilt from the committed table
-# where there is one (tools/restore_campaign.py), so only unfinished points run (a finished campaign costs
-# nothing). The binary is copied to RUNS/bin/suspend-campaign, so that rebuilding build/ meanwhile does not change
-# what runs. One background job runs the sweeps in turn (two sweeps started side by side share the cores, and
-# `nice` does not order jobs started in different sessions).
+# the FCM phi_m campaign (results/phim/fcm), then the pairwise one (results/phim/pairwise). A campaign folder that
+# a new machine lacks is first rebuilt from the committed table where there is one (tools/restore_campaign.py), so
+# only unfinished points run (a finished campaign costs nothing). The binary is copied to RUNS/bin/suspend-campaign,
+# so that rebuilding build/ meanwhile does not change what runs. One background job runs the sweeps in turn (two
+# sweeps started side by side share the cores, and `nice` does not order jobs started in different sessions).
 # Logs: RUNS/NAME.log; stop with `pkill -f suspend-campaign`.
 # usage: tools/resume_campaigns.sh [SUSPEND (default build/bin/suspend)] [RUNS (default runs)]
 set -euo pipefail
