@@ -201,6 +201,21 @@ void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgri
   // which the larger weights amplify; at phi = 0.45 that took 7.3 GMRES iterations per step instead of 1.4, and
   // least-squares lines through 3 or 4 solutions lost at a min gap of 0.001 a (docs/coupling.md section 6).
   if (params_.extrapolate && x_older_.size() == x_.size()) x_ = 2.0 * x_ - x_older_;
+  lagged_matrix_now_ = false;
+  if (params_.lagged_predictor && defect_.size() == nv) {
+    // The velocities of the lagged-far-field step as the start: contacts and close pairs of this step, the far
+    // field of the last solve (docs/coupling.md section 3c). A predictor that fails leaves the extrapolation.
+    const double tp = omp_get_wtime();
+    Eigen::VectorXd predicted = x_.head(nv);
+    CoupledResult ignored;
+    try {
+      lagged_velocities(pb, subgrid, f0, r_stokes, predicted, ignored);
+      x_.head(nv) = predicted;
+    } catch (const NumericalError&) {
+      lagged_matrix_now_ = false;
+    }
+    timings_.subgrid += omp_get_wtime() - tp;
+  }
   // Preconditioner: (R_Stokes + sum Delta_R)^-1 R_Stokes on the velocities, the isolated stresslet on the strains.
   std::vector<double> radius(pb.radii.begin(), pb.radii.end());
   Eigen::VectorXd s_scale(ns);
@@ -296,8 +311,8 @@ void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgri
   }
 
   x_older_ = last;
-  if (params_.far_field_every > 1) {  // the defect g = A dV - f0 of this solution (contract)
-    prepare_lagged_matrix(pb, subgrid, false);
+  if (params_.far_field_every > 1 || params_.lagged_predictor) {  // the defect g = A dV - f0 (contract)
+    if (!lagged_matrix_now_) prepare_lagged_matrix(pb, subgrid, false);
     const Eigen::VectorXd dv_r = x_.head(nv);
     if (subgrid && subgrid->corrected_pairs() > 0) {
       lagged_.multiply(dv_r, defect_);
@@ -311,17 +326,14 @@ void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgri
   write_result(pb, subgrid, out);
 }
 
-void CoupledMobility::solve_lagged(const CoupledProblem& pb, SubgridLubrication* subgrid, const Eigen::VectorXd& f0,
-                                   const Eigen::VectorXd& r_stokes, CoupledResult& out) {
-  const std::size_t n = pb.positions.size();
-  const Index nv = 6 * static_cast<Index>(n);
-  const double t0 = omp_get_wtime();
+void CoupledMobility::lagged_velocities(const CoupledProblem& pb, SubgridLubrication* subgrid,
+                                        const Eigen::VectorXd& f0, const Eigen::VectorXd& r_stokes,
+                                        Eigen::VectorXd& sol, CoupledResult& out) {
   const bool near = subgrid && subgrid->corrected_pairs() > 0;
   if (near && !lagged_matrix_ready_) prepare_lagged_matrix(pb, subgrid, true);
   lagged_matrix_ready_ = keep_lagged_matrix_;
+  lagged_matrix_now_ = near;
   const Eigen::VectorXd rhs = f0 + defect_;
-  Eigen::VectorXd sol = x_.head(nv);
-  if (params_.extrapolate && x_older_.size() == x_.size()) sol = 2.0 * x_.head(nv) - x_older_.head(nv);
   out.iterations = 0;
   out.residual = 0.0;
   if (near) {
@@ -338,6 +350,15 @@ void CoupledMobility::solve_lagged(const CoupledProblem& pb, SubgridLubrication*
     sol = rhs.cwiseQuotient(r_stokes);
   }
   if (!sol.allFinite()) throw NumericalError("lagged-far-field solve: non-finite solution");
+}
+
+void CoupledMobility::solve_lagged(const CoupledProblem& pb, SubgridLubrication* subgrid, const Eigen::VectorXd& f0,
+                                   const Eigen::VectorXd& r_stokes, CoupledResult& out) {
+  const Index nv = 6 * static_cast<Index>(pb.positions.size());
+  const double t0 = omp_get_wtime();
+  Eigen::VectorXd sol = x_.head(nv);
+  if (params_.extrapolate && x_older_.size() == x_.size()) sol = 2.0 * x_.head(nv) - x_older_.head(nv);
+  lagged_velocities(pb, subgrid, f0, r_stokes, sol, out);
   timings_.subgrid += omp_get_wtime() - t0;
   x_older_ = x_;
   x_.head(nv) = sol;  // the stresslets stay those of the last full solve

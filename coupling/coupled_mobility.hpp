@@ -70,6 +70,9 @@ struct KrylovParams {
                                    // engine's lubrication range); beyond it, lagged with the far field
   // > 1: the caller lags the far field (multi-rate stepping, refresh_far_field), so full solves keep their defect g.
   int far_field_every = 1;
+  // Full solves start from the lagged-far-field velocities of the present step (the defect g of the last full
+  // solve; contract "Lagged far field") instead of the extrapolation: the same solution to the tolerance.
+  bool lagged_predictor = false;
   void validate() const;     // throws InputError naming the key (fcm.krylov_*)
 };
 
@@ -153,6 +156,9 @@ class CoupledMobility {
   // lagged_matrix_ready_ (solve_parts: the second part reuses the first's).
   void solve_lagged(const CoupledProblem& pb, SubgridLubrication* subgrid, const Eigen::VectorXd& f0,
                     const Eigen::VectorXd& r_stokes, CoupledResult& out);
+  // The lagged system A dV = f0 + g for the velocities, from the start in `sol` (CG iterations into `out`).
+  void lagged_velocities(const CoupledProblem& pb, SubgridLubrication* subgrid, const Eigen::VectorXd& f0,
+                         const Eigen::VectorXd& r_stokes, Eigen::VectorXd& sol, CoupledResult& out);
   // lagged_ = A of the present configuration (contract), its CG factors too when `factor`.
   void prepare_lagged_matrix(const CoupledProblem& pb, SubgridLubrication* subgrid, bool factor);
   void write_result(const CoupledProblem& pb, SubgridLubrication* subgrid, CoupledResult& out) const;
@@ -171,6 +177,7 @@ class CoupledMobility {
   }
   bool lagged_matrix_ready_ = false;
   bool keep_lagged_matrix_ = false;
+  bool lagged_matrix_now_ = false;  // lagged_ holds A of the present configuration (this solve assembled it)
   SymmetricBlockMatrix lagged_;
   PreconditionedConjugateGradient lagged_cg_;
   SymmetricBlockMatrix near_;

@@ -18,6 +18,7 @@ coupling::KrylovParams krylov_params(const FcmParams& f) {
   k.preconditioner_cutoff = f.preconditioner_cutoff;
   k.inner_max_iterations = f.preconditioner_iterations;
   k.far_field_every = f.far_field_every;
+  k.lagged_predictor = f.lagged_predictor;
   k.lagged_cutoff = f.lagged_cutoff;
   k.lagged_tolerance = f.lagged_tolerance;
   return k;

@@ -40,6 +40,9 @@ struct FcmParams {
   // Multi-rate stepping: the full FCM solve at steps that are multiples of this, the lagged far field between
   // (coupled_mobility.hpp "Lagged far field"; 1: every step; docs/coupling.md section 3b has the measured errors).
   int far_field_every = 1;
+  // Full solves start from the lagged-far-field step's velocities instead of the extrapolated ones
+  // (KrylovParams::lagged_predictor; docs/coupling.md section 3c).
+  bool lagged_predictor = false;
   double lagged_cutoff = 2.25;     // s' below which pair corrections are solved on lagged steps too
   double lagged_tolerance = 1e-6;  // relative residual of the lagged steps' conjugate-gradient solve
   bool subgrid = true;             // sub-grid lubrication (false: FCM alone)

@@ -206,6 +206,8 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
       f.krylov_tolerance = m.number("tolerance", f.krylov_tolerance, Range::open(0.0, 1.0));
       f.max_iterations = static_cast<int>(m.integer("max_iterations", f.max_iterations, 1, 100'000));
       f.far_field_every = static_cast<int>(m.integer("far_field_every", f.far_field_every, 1, 1000));
+      f.lagged_predictor =
+          m.choice("predictor", "extrapolated", {"extrapolated", "lagged_far_field"}) == "lagged_far_field";
       f.preconditioner_iterations =
           static_cast<int>(m.integer("preconditioner_iterations", f.preconditioner_iterations, 1, 1000));
       f.lagged_cutoff = m.number("lagged_cutoff", f.lagged_cutoff, Range::closed(2.0, 10.0));
@@ -374,6 +376,8 @@ YAML::Node to_yaml(const Case& c) {
     m["tolerance"] = number_node(c.fcm.krylov_tolerance);
     m["max_iterations"] = c.fcm.max_iterations;
     m["far_field_every"] = c.fcm.far_field_every;
+    // Written only when set, so that checkpoints of runs before the key existed keep their fingerprint.
+    if (c.fcm.lagged_predictor) m["predictor"] = "lagged_far_field";
     m["preconditioner_iterations"] = c.fcm.preconditioner_iterations;
     m["lagged_cutoff"] = number_node(c.fcm.lagged_cutoff);
     m["lagged_tolerance"] = number_node(c.fcm.lagged_tolerance);

@@ -360,7 +360,9 @@ int run_case(const Case& c, const RunOptions& o) {
           slow_start_time = sim.state().time;
         }
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-        if (const int sig = stop_signal.load()) {
+        // A signal on the step that reaches run.strain lets the run end as done: a "stopped" checkpoint at
+        // run.strain could not be continued.
+        if (const int sig = stop_signal.load(); sig && progress_of() < c.run.strain - eps) {
           save();
           finish_outputs();
           progress.finish();
