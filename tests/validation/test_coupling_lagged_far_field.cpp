@@ -5,7 +5,9 @@
 //    grows with the lag and is measured here on a dense, contact-carrying cluster (implicit contacts);
 //  * an isolated squeezed pair keeps its exact separation rate on lagged steps (the near field is solved every step);
 //  * a restart from a checkpoint taken between full solves repeats the uninterrupted run bit for bit (rate and stress
-//    control: the defects go into the checkpoint).
+//    control: the defects go into the checkpoint);
+//  * fcm.predictor = lagged_far_field (the full solve started from the lagged step's velocities) is as accurate as
+//    the extrapolated start from fewer Stokes solves, and restarts exactly too.
 #include <gtest/gtest.h>
 
 #include <cmath>
