@@ -212,7 +212,7 @@ void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgri
       lagged_velocities(pb, subgrid, f0, r_stokes, predicted, ignored);
       x_.head(nv) = predicted;
     } catch (const NumericalError&) {
-      lagged_matrix_now_ = false;
+      // The start stays the extrapolation; lagged_ (if assembled) is still this configuration's matrix.
     }
     timings_.subgrid += omp_get_wtime() - tp;
   }
