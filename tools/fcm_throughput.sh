@@ -10,7 +10,7 @@
 # Prints per case and strain: steps, seconds, s/strain of each engine, the FCM/pairwise ratio, FCM's mean Stokes
 # solves per step (summary.json fcm.stokes_solves_per_step) and the core-hours of a 20-strain run at that rate.
 # Usage: tools/fcm_throughput.sh [STRAINS (default "0.3")] [CASES (default "d c bi")] [BUILD_DIR (default build)]
-#                               [EXTRA --set assignments for the FCM runs, e.g. "hydrodynamics.fcm.krylov_tolerance=1e-3"]
+#                               [EXTRA --set assignments for the FCM runs, e.g. "hydrodynamics.fcm.tolerance=1e-3"]
 set -euo pipefail
 if [[ ${1:-} == -h || ${1:-} == --help ]]; then awk 'NR > 1 && !/^#/ {exit} NR > 1 {sub(/^# ?/, ""); print}' "$0"; exit 0; fi
 root=$(cd "$(dirname "$0")/.." && pwd)
