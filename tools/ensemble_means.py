@@ -6,8 +6,13 @@ of each group from the first with its combined error, and the mean difference ov
 parameters, e.g. the seed, are equal) with its standard error. Made for issue 14's question whether the
 multi-rate FCM step shifts eta_r beyond run-to-run scatter (cases/validation/fcm_multirate_ensemble.yaml).
 
-usage: tools/ensemble_means.py CAMPAIGN.json KEY
+usage: tools/ensemble_means.py CAMPAIGN.json [MORE.json ...] KEY
   KEY  the dotted parameter that names the groups (hydrodynamics.fcm.far_field_every)
+Points of a campaign that does not vary KEY (it set one value for all points) form a group named after the
+campaign's folder, so a second campaign can be set against the first one's groups: e.g.
+  tools/ensemble_means.py results/multirate/campaign.json runs/predictor/campaign.json \
+      hydrodynamics.fcm.far_field_every
+compares the predictor ensemble (group "predictor") with the every-step runs (group "1") seed by seed.
 """
 import json
 import math
@@ -26,34 +31,37 @@ def mean_and_error(values):
 
 def usage(message):
     sys.stderr.write(f"error: {message}\n" if message else "")
-    sys.stderr.write("usage: tools/ensemble_means.py CAMPAIGN.json KEY\n")
+    sys.stderr.write("usage: tools/ensemble_means.py CAMPAIGN.json [MORE.json ...] KEY\n")
     sys.exit(2)
 
 
 def main(argv):
     if len(argv) < 2 or argv[0] in ("-h", "--help"):
         usage("")
-    path, key = argv[0], argv[1]
-    if not os.path.isfile(path):
-        usage(f"{path}: no such campaign table (give DIR/campaign.json)")
-    if len(argv) > 2:
-        usage(f"unexpected argument '{argv[2]}'")
-    with open(path) as f:
-        table = json.load(f)
+    paths, key = argv[:-1], argv[-1]
     groups = {}
-    for p in table["points"]:
-        if p.get("status") != "done" or key not in p["parameters"]:
-            continue
-        d = p["derived"]
-        twin = tuple(sorted((k, str(v)) for k, v in p["parameters"].items() if k != key))  # e.g. the seed
-        groups.setdefault(str(p["parameters"][key]), []).append(
-            (p["name"], {q: d[q]["mean"] for q, _ in QUANTITIES}, d["eta_r"]["sem"], twin))
+    for path in paths:
+        if not os.path.isfile(path):
+            usage(f"{path}: no such campaign table (give DIR/campaign.json)")
+        with open(path) as f:
+            table = json.load(f)
+        varies = any(key in p["parameters"] for p in table["points"])
+        folder = os.path.basename(os.path.dirname(os.path.abspath(path)))
+        for p in table["points"]:
+            if p.get("status") != "done" or (varies and key not in p["parameters"]):
+                continue
+            d = p["derived"]
+            twin = tuple(sorted((k, str(v)) for k, v in p["parameters"].items() if k != key))  # e.g. the seed
+            group = str(p["parameters"][key]) if varies else folder
+            groups.setdefault(group, []).append(
+                (p["name"], {q: d[q]["mean"] for q, _ in QUANTITIES}, d["eta_r"]["sem"], twin))
     if not groups:
-        usage(f"{path}: no finished point varies {key}")
+        usage(f"{', '.join(paths)}: no finished point varies {key}")
     first = None
     first_rows = None
     print(f"{key:>10} {'n':>3} " + " ".join(f"{label:>26}" for _, label in QUANTITIES) + "  mean block SE of eta_r")
-    for name in sorted(groups, key=lambda g: float(g) if g.replace('.', '', 1).isdigit() else g):
+    numeric = lambda g: g.replace('.', '', 1).isdigit()
+    for name in sorted(groups, key=lambda g: (0, float(g), "") if numeric(g) else (1, 0.0, g)):
         rows = groups[name]
         n = len(rows)
         stats = {q: mean_and_error([r[1][q] for r in rows]) for q, _ in QUANTITIES}
