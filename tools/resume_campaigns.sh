@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Resumes the project's long campaigns on this machine, in the background, one after the other on both cores:
 # the issue-14 seed ensemble (results/multirate, rate control), the FCM phi_m campaign (results/phim/fcm), the
-# ensemble of the lagged predictor (results/predictor), the stress-controlled check of the FCM campaign's k = 20
-# (results/multirate_stress), then the pairwise campaign (results/phim/pairwise). Points under an hour go before
+# ensembles of issue 14's fast setting (far_field_every 10 + lagged predictor) on (d) and (c) (results/predictor,
+# results/fast_frictional), the stress-controlled check of the FCM campaign's k = 20 (results/multirate_stress),
+# then the pairwise campaign (results/phim/pairwise). Points under an hour go before
 # the check's every-step points (2-3 h each), which a session on a new machine, losing its runs/ folder, rarely
 # sees finish. A campaign folder that a new machine lacks is first rebuilt from the committed table where there is
 # one (tools/restore_campaign.py), so only unfinished points run (a finished campaign costs nothing). The binary is
@@ -24,6 +25,7 @@ campaigns=(
   "multirate|$root/cases/validation/fcm_multirate_ensemble.yaml|$root/results/multirate/campaign.json"
   "phim_fcm|$root/cases/phim/fcm_campaign.yaml|$root/results/phim/fcm/campaign.json"
   "predictor|$root/cases/validation/fcm_predictor_ensemble.yaml|$root/results/predictor/campaign.json"
+  "fast_frictional|$root/cases/validation/fcm_fast_frictional_ensemble.yaml|$root/results/fast_frictional/campaign.json"
   "multirate_stress|$root/cases/validation/fcm_multirate_stress.yaml|$root/results/multirate_stress/campaign.json"
   "phim_pairwise|$root/cases/phim/pairwise_campaign.yaml|$root/results/phim/pairwise/campaign.json"
 )
