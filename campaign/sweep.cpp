@@ -65,6 +65,7 @@ struct Job {
   PointLock lock;
   PointRecord record;
   bool over_budget = false;
+  fs::file_time_type checkpointed = fs::file_time_type::min();  // last checkpoint its record's wall time covers
 };
 }  // namespace
 
@@ -176,7 +177,9 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
     }
     if (pid < 0) throw std::runtime_error("fork failed for point " + p->name);
     say("start " + p->name + (r.runs > 1 ? " (continued, run " + std::to_string(r.runs) + ")" : ""));
-    jobs.push_back({pid, p, Clock::now(), std::move(lock), r, false});
+    std::error_code ec;
+    const fs::file_time_type checkpointed = fs::last_write_time(pd / "checkpoint.h5", ec);
+    jobs.push_back({pid, p, Clock::now(), std::move(lock), r, false, ec ? fs::file_time_type::min() : checkpointed});
   };
 
   bool disk_full = false;  // a point stopped with exit_output_error
@@ -224,6 +227,18 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
       for (Job& j : jobs) kill(j.pid, SIGTERM);
       forwarded = true;
       say("stopping: each running point checkpoints; the same command continues the sweep");
+    }
+    // A point's record gains its wall time at each new checkpoint, so that SIGKILL of the sweep (a machine or
+    // session that ends) loses the time as it loses the work: since the last checkpoint.
+    for (Job& j : jobs) {
+      const fs::path pd = point_dir(o.out_dir, *j.point);
+      std::error_code ec;
+      const fs::file_time_type t = fs::last_write_time(pd / "checkpoint.h5", ec);
+      if (ec || t <= j.checkpointed) continue;
+      j.checkpointed = t;
+      PointRecord so_far = j.record;
+      so_far.wall_seconds += std::chrono::duration<double>(Clock::now() - j.start).count();
+      write_record(pd, so_far);
     }
     for (Job& j : jobs)
       if (o.point_seconds > 0 && !j.over_budget &&

@@ -1,7 +1,8 @@
 // `suspend sweep` as users run it: a campaign gives the same table run with two jobs, after SIGKILL of the sweep
-// and its runs followed by the same command, and point by point as a scheduler would run it; a changed campaign is
-// refused naming the key; a stress-controlled point that stops flowing ends as `jammed`; a point over its
-// wall-clock budget is `failed` and kept until --retry-failed.
+// and its runs followed by the same command (the killed point's wall time kept up to its last checkpoint), and
+// point by point as a scheduler would run it; a changed campaign is refused naming the key; a stress-controlled
+// point that stops flowing ends as `jammed`; a point over its wall-clock budget is `failed` and kept until
+// --retry-failed.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -67,14 +68,23 @@ TEST(Sweep, SameTableWithJobsAfterSigkillAndPointByPoint) {
   EXPECT_EQ(ta["points"][2]["parameters"]["contact.mu"], 0.5);
   EXPECT_EQ(ta["points"][2]["case"]["mu_s"], 0.5);
 
-  // B: the sweep and its runs are killed together (SIGKILL) mid-point, then the same command finishes it.
+  // B: the sweep and its runs are killed together (SIGKILL) mid-point, then the same command finishes it. The
+  // point's record already holds its wall time up to its last checkpoint (the sweep adds it at each checkpoint).
   const pid_t pid = spawn({"sweep", file, "--out", b, "--jobs", "1", "--quiet"}, b + ".err", true);
   const auto t0 = std::chrono::steady_clock::now();
   bool killed = false;
+  auto recorded_seconds = [&](const std::string& p) {
+    try {
+      return json::parse(read_text(b + "/points/" + p + "/point.json")).value("wall_seconds", 0.0);
+    } catch (const std::exception&) {
+      return 0.0;
+    }
+  };
   while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(120) && !killed) {
     for (const char* p : {"phi0.40", "phi0.45", "phi0.5_mu0.5"}) {
       const double s = checkpoint_strain(b + "/points/" + p + "/checkpoint.h5");
-      if (s >= kill_strain && s < 0.25 && !fs::exists(b + "/points/" + p + "/summary.json")) {
+      if (s >= kill_strain && s < 0.25 && recorded_seconds(p) > 0.0 &&
+          !fs::exists(b + "/points/" + p + "/summary.json")) {
         kill(-pid, SIGKILL);
         killed = true;
         break;
@@ -82,7 +92,7 @@ TEST(Sweep, SameTableWithJobsAfterSigkillAndPointByPoint) {
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  ASSERT_TRUE(killed) << "no point was caught mid-run";
+  ASSERT_TRUE(killed) << "no point was caught mid-run with its wall time so far in its record";
   EXPECT_EQ(wait_exit(pid), 128 + SIGKILL);
   const Result rb = run({"sweep", file, "--out", b, "--jobs", "1", "--quiet"});
   ASSERT_EQ(rb.code, 0) << rb.err;
