@@ -5,17 +5,24 @@ share of the shear stress Sigma^c_12/Sigma_12 (Fig. 19: it rises as sigma* falls
 stress -Sigma^c_22/Sigma_12 (Fig. 17: adhesion hardly changes it at fixed phi), and the macroscopic friction
 mu = -Sigma_12/Sigma^c_22 with the viscous number J (Fig. 22: at fixed J, mu rises as sigma* falls; at high phi mu is
 mostly a function of phi). Then, per phi with at least two stresses, the spread of each quantity over sigma*
-(largest minus smallest, and that difference in combined standard errors). Flowing (`done`) points only; phi is
-rounded to 0.01 to line up points of one phi.
+(largest minus smallest, and that difference in combined standard errors). Last, Fig. 19 [bottom]: each adhesive
+point's Sigma^c_12/Sigma_12 against the non-adhesive points' (the master curve, linear between them) at the same
+phi/phi_m, with phi_m the one Fig. 15 draws for the group (tools/phim_figures.py: the fit, or the bracket's middle
+where a jammed point lies below it). Flowing (`done`) points only; phi is rounded to 0.01 to line up points of one
+phi.
 
 usage: tools/paper_trends.py RESULTS_DIR [--mu-s MU] [--markdown]
   RESULTS_DIR  holds pairwise/ and/or fcm/, each with campaign.csv (results/phim)
   --mu-s MU    friction coefficient of the groups shown (default 0.5, the paper's Figs. 17, 19, 22)
 """
 import csv
+import json
 import math
 import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from phim_figures import drawn_phi_m  # noqa: E402  (the phi_m that Fig. 15 draws)
 
 METHODS = ("pairwise", "fcm")
 QUANTITIES = (("Sigma_c12/Sigma_12", "S_c12/S_12", 1.0), ("Sigma_c22/Sigma_12", "-S_c22/S_12", -1.0), ("mu", "mu", 1.0))
@@ -80,6 +87,37 @@ def load(path, mu_s):
     return table
 
 
+def master_curve(path, table, mu_s):
+    """Fig. 19 [bottom]: (phi, sigma*, phi/phi_m, adhesive ratio, master-curve ratio, difference in errors) of every
+    adhesive point whose phi/phi_m lies within the non-adhesive points' range; phim.json next to the table."""
+    fits_file = os.path.join(os.path.dirname(path), "phim.json")
+    if not os.path.isfile(fits_file):
+        return []
+    with open(fits_file) as f:
+        fits = json.load(f)["fits"]
+    phi_m = {}
+    for fit in fits:
+        drawn = drawn_phi_m(fit)
+        if abs(fit["mu_s"] - mu_s) < 1e-9 and drawn:
+            phi_m[math.inf if fit["sigma_star"] is None else fit["sigma_star"]] = drawn[0]
+    if math.inf not in phi_m:
+        return []
+    q = "Sigma_c12/Sigma_12"
+    curve = sorted((phi / phi_m[math.inf], v[math.inf][q]) for phi, v in table.items() if math.inf in v)
+    rows = []
+    for phi in sorted(table):
+        for s, v in sorted(table[phi].items()):
+            if math.isinf(s) or s not in phi_m:
+                continue
+            x = phi / phi_m[s]
+            for (x0, (m0, e0)), (x1, (m1, e1)) in zip(curve, curve[1:]):
+                if x0 <= x <= x1:
+                    w = (x - x0) / (x1 - x0)
+                    m, e = (1 - w) * m0 + w * m1, math.hypot((1 - w) * e0, w * e1)
+                    rows.append((phi, s, x, v[q], (m, e), (v[q][0] - m) / math.hypot(v[q][1], e)))
+    return rows
+
+
 def fmt(v, sign=1.0):
     m, e = v
     return f"{sign * m:.3g} +- {e:.2g}" if math.isfinite(e) else f"{sign * m:.3g}"
@@ -123,6 +161,13 @@ def main(argv):
                 parts.append(f"{name} {lo[0]:.3g}-{hi[0]:.3g} ({(hi[0] - lo[0]) / err:.1f})")
             stresses = ", ".join(label(s) for s in sorted(table[phi]))
             print(f"  phi {phi:.2f} (sigma* {stresses}): " + "; ".join(parts))
+        rows = master_curve(path, table, args["mu_s"])
+        if rows:
+            print(f"\n{method}, mu_s = {args['mu_s']:g}: Sigma^c_12/Sigma_12 of the adhesive points against the "
+                  "non-adhesive master curve at the same phi/phi_m (Fig. 19 [bottom])")
+            for phi, s, x, own, curve, z in rows:
+                print(f"  phi {phi:.2f}  sigma* {label(s):>4}  phi/phi_m {x:.3f}  {fmt(own):>16}  master "
+                      f"{fmt(curve):>16}  difference {own[0] - curve[0]:+.3f} ({z:+.1f} errors)")
     if not found:
         usage(f"no pairwise/campaign.csv or fcm/campaign.csv under '{args['dir']}'")
 
