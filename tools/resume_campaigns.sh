@@ -26,6 +26,7 @@ campaigns=(
   "phim_fcm|$root/cases/phim/fcm_campaign.yaml|$root/results/phim/fcm/campaign.json"
   "predictor|$root/cases/validation/fcm_predictor_ensemble.yaml|$root/results/predictor/campaign.json"
   "fast_frictional|$root/cases/validation/fcm_fast_frictional_ensemble.yaml|$root/results/fast_frictional/campaign.json"
+  "exact_relative_check|$root/cases/phim/pairwise_exact_relative_check.yaml|$root/results/exact_relative_check/campaign.json"
   "multirate_stress|$root/cases/validation/fcm_multirate_stress.yaml|$root/results/multirate_stress/campaign.json"
   "phim_pairwise|$root/cases/phim/pairwise_campaign.yaml|$root/results/phim/pairwise/campaign.json"
 )
