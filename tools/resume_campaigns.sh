@@ -2,8 +2,9 @@
 # Resumes the project's long campaigns on this machine, in the background, one after the other on both cores:
 # the issue-14 seed ensemble (results/multirate, rate control), the FCM phi_m campaign (results/phim/fcm), the
 # ensembles of issue 14's fast setting (far_field_every 10 + lagged predictor) on (d) and (c) (results/predictor,
-# results/fast_frictional), the stress-controlled check of the FCM campaign's k = 20 (results/multirate_stress),
-# then the pairwise campaign (results/phim/pairwise). Points under an hour go before
+# results/fast_frictional), the pairwise sigma* = 1 points with the exact two-sphere functions
+# (results/exact_relative_check), the stress-controlled check of the FCM campaign's k = 20
+# (results/multirate_stress), then the pairwise campaign (results/phim/pairwise). Points under an hour go before
 # the check's every-step points (2-3 h each), which a session on a new machine, losing its runs/ folder, rarely
 # sees finish. A campaign folder that a new machine lacks is first rebuilt from the committed table where there is
 # one (tools/restore_campaign.py), so only unfinished points run (a finished campaign costs nothing). The binary is
