@@ -3,7 +3,10 @@
 per group, the mean over its points of eta_r, Sigma^c_12/Sigma_12 and N2, the ensemble standard error
 (sample standard deviation / sqrt(n)), the mean of the points' own block-averaged errors, the difference
 of each group from the first with its combined error, and the mean difference over twins (points whose other
-parameters, e.g. the seed, are equal) with its standard error. Made for issue 14's question whether the
+parameters, e.g. the seed, are equal) with two errors: from the scatter of the differences, and from the runs' own
+block-averaged errors (sqrt of the sum of both twins' squared errors, over n). Twins share their start but
+decorrelate within a few strains (docs/validation.md section 3), so the scatter error is meaningful only when it
+agrees with the second; with few twins it can be small by chance. Made for issue 14's question whether the
 multi-rate FCM step shifts eta_r beyond run-to-run scatter (cases/validation/fcm_multirate_ensemble.yaml).
 
 usage: tools/ensemble_means.py CAMPAIGN.json [MORE.json ...] KEY
@@ -54,7 +57,8 @@ def main(argv):
             twin = tuple(sorted((k, str(v)) for k, v in p["parameters"].items() if k != key))  # e.g. the seed
             group = str(p["parameters"][key]) if varies else folder
             groups.setdefault(group, []).append(
-                (p["name"], {q: d[q]["mean"] for q, _ in QUANTITIES}, d["eta_r"]["sem"], twin))
+                (p["name"], {q: d[q]["mean"] for q, _ in QUANTITIES}, d["eta_r"]["sem"], twin,
+                 {q: d[q]["sem"] for q, _ in QUANTITIES}))
     if not groups:
         usage(f"{', '.join(paths)}: no finished point varies {key}")
     first = None
@@ -70,7 +74,7 @@ def main(argv):
         for r in rows:
             print(f"{'':>14} {r[0]}: eta_r {r[1]['eta_r']:.4g}, ratio {r[1]['Sigma_c12/Sigma_12']:.3f}, N2 {r[1]['N2']:.3g}")
         if first is None:
-            first, first_rows = stats, {r[3]: r[1] for r in rows}
+            first, first_rows = stats, {r[3]: (r[1], r[4]) for r in rows}
         else:
             diffs = []
             for q, label in QUANTITIES:
@@ -78,14 +82,16 @@ def main(argv):
                 err = math.hypot(stats[q][1], first[q][1])
                 diffs.append(f"{label} {d:+.4g} +- {err:.2g} ({d / err if err > 0 else math.nan:+.1f} errors)")
             print(f"{'':>14} against the first group: " + "; ".join(diffs))
-            # Paired: the same other parameters (packing) run both ways; the pair's shared start and history
-            # cancel from the difference, so this is the sharper test of a shift.
-            pairs = [(r[1], first_rows[r[3]]) for r in rows if r[3] in first_rows]
+            # Paired: the same other parameters (packing) run both ways; what the pair shares cancels from the
+            # difference as long as the twins stay correlated.
+            pairs = [(r[1], r[4], *first_rows[r[3]]) for r in rows if r[3] in first_rows]
             if len(pairs) > 1:
                 diffs = []
                 for q, label in QUANTITIES:
-                    m, se = mean_and_error([a[q] - b[q] for a, b in pairs])
-                    diffs.append(f"{label} {m:+.4g} +- {se:.2g} ({m / se if se > 0 else math.nan:+.1f} errors)")
+                    m, se = mean_and_error([a[q] - b[q] for a, _, b, _ in pairs])
+                    own = math.sqrt(sum(ea[q] ** 2 + eb[q] ** 2 for _, ea, _, eb in pairs)) / len(pairs)
+                    diffs.append(f"{label} {m:+.4g} +- {se:.2g} ({m / se if se > 0 else math.nan:+.1f} errors; "
+                                 f"runs' own errors +- {own:.2g}, {m / own if own > 0 else math.nan:+.1f})")
                 print(f"{'':>14} paired with the first group ({len(pairs)} twins): " + "; ".join(diffs))
     return 0
 
