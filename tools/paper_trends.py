@@ -22,7 +22,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from phim_figures import drawn_phi_m  # noqa: E402  (the phi_m that Fig. 15 draws)
+from compare_methods import interpolate  # noqa: E402  (linear between neighbouring points, errors carried)
+from phim_figures import drawn_phi_m, sigma_of  # noqa: E402  (the phi_m that Fig. 15 draws)
 
 METHODS = ("pairwise", "fcm")
 QUANTITIES = (("Sigma_c12/Sigma_12", "S_c12/S_12", 1.0), ("Sigma_c22/Sigma_12", "-S_c22/S_12", -1.0), ("mu", "mu", 1.0))
@@ -99,22 +100,21 @@ def master_curve(path, table, mu_s):
     for fit in fits:
         drawn = drawn_phi_m(fit)
         if abs(fit["mu_s"] - mu_s) < 1e-9 and drawn:
-            phi_m[math.inf if fit["sigma_star"] is None else fit["sigma_star"]] = drawn[0]
+            phi_m[sigma_of(fit)] = drawn[0]
     if math.inf not in phi_m:
         return []
     q = "Sigma_c12/Sigma_12"
-    curve = sorted((phi / phi_m[math.inf], v[math.inf][q]) for phi, v in table.items() if math.inf in v)
+    curve = sorted((phi / phi_m[math.inf], {q: v[math.inf][q]}) for phi, v in table.items() if math.inf in v)
     rows = []
     for phi in sorted(table):
         for s, v in sorted(table[phi].items()):
             if math.isinf(s) or s not in phi_m:
                 continue
             x = phi / phi_m[s]
-            for (x0, (m0, e0)), (x1, (m1, e1)) in zip(curve, curve[1:]):
-                if x0 <= x <= x1:
-                    w = (x - x0) / (x1 - x0)
-                    m, e = (1 - w) * m0 + w * m1, math.hypot((1 - w) * e0, w * e1)
-                    rows.append((phi, s, x, v[q], (m, e), (v[q][0] - m) / math.hypot(v[q][1], e)))
+            on_curve = interpolate(curve, x, q)
+            if on_curve:
+                m, e = on_curve
+                rows.append((phi, s, x, v[q], (m, e), (v[q][0] - m) / math.hypot(v[q][1], e)))
     return rows
 
 
