@@ -58,6 +58,13 @@ std::string eta_text(const fs::path& point_dir) {
   return b;
 }
 
+// When the point's checkpoint was last written (the earliest time there is when it has none).
+fs::file_time_type checkpoint_time(const fs::path& point_dir) {
+  std::error_code ec;
+  const fs::file_time_type t = fs::last_write_time(point_dir / "checkpoint.h5", ec);
+  return ec ? fs::file_time_type::min() : t;
+}
+
 struct Job {
   pid_t pid = -1;
   const Point* point = nullptr;
@@ -177,9 +184,7 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
     }
     if (pid < 0) throw std::runtime_error("fork failed for point " + p->name);
     say("start " + p->name + (r.runs > 1 ? " (continued, run " + std::to_string(r.runs) + ")" : ""));
-    std::error_code ec;
-    const fs::file_time_type checkpointed = fs::last_write_time(pd / "checkpoint.h5", ec);
-    jobs.push_back({pid, p, Clock::now(), std::move(lock), r, false, ec ? fs::file_time_type::min() : checkpointed});
+    jobs.push_back({pid, p, Clock::now(), std::move(lock), r, false, checkpoint_time(pd)});
   };
 
   bool disk_full = false;  // a point stopped with exit_output_error
@@ -232,9 +237,8 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
     // session that ends) loses the time as it loses the work: since the last checkpoint.
     for (Job& j : jobs) {
       const fs::path pd = point_dir(o.out_dir, *j.point);
-      std::error_code ec;
-      const fs::file_time_type t = fs::last_write_time(pd / "checkpoint.h5", ec);
-      if (ec || t <= j.checkpointed) continue;
+      const fs::file_time_type t = checkpoint_time(pd);
+      if (t <= j.checkpointed) continue;
       j.checkpointed = t;
       PointRecord so_far = j.record;
       so_far.wall_seconds += std::chrono::duration<double>(Clock::now() - j.start).count();
