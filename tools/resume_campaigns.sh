@@ -20,7 +20,9 @@ suspend=${1:-$root/build/bin/suspend}
 runs=${2:-$root/runs}
 if [[ ! -x $suspend ]]; then echo "error: $suspend not found; build first (see README)" >&2; exit 2; fi
 mkdir -p "$runs/bin"
-cp "$suspend" "$runs/bin/suspend-campaign"
+# copy then rename: a running sweep keeps its (busy) binary, new sweeps get the new one
+cp "$suspend" "$runs/bin/suspend-campaign.new"
+mv -f "$runs/bin/suspend-campaign.new" "$runs/bin/suspend-campaign"
 # name | campaign file | committed table
 campaigns=(
   "multirate|$root/cases/validation/fcm_multirate_ensemble.yaml|$root/results/multirate/campaign.json"
