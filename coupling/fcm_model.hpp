@@ -39,10 +39,12 @@ struct FcmParams {
   int preconditioner_iterations = 5;   // its inner block-SGS CG iterations (KrylovParams::inner_max_iterations)
   // Multi-rate stepping: the full FCM solve at steps that are multiples of this, the lagged far field between
   // (coupled_mobility.hpp "Lagged far field"; 1: every step; docs/coupling.md section 3b has the measured errors).
-  int far_field_every = 1;
+  // With the lagged predictor the default: FCM at 2-3x the pairwise engine's cost, its rheology that of every step
+  // within the seed ensembles' errors (docs/validation.md section 3, "The fast setting").
+  int far_field_every = 10;
   // Full solves start from the lagged-far-field step's velocities instead of the extrapolated ones
   // (KrylovParams::lagged_predictor; docs/coupling.md section 3c).
-  bool lagged_predictor = false;
+  bool lagged_predictor = true;
   double lagged_cutoff = 2.25;     // s' below which pair corrections are solved on lagged steps too
   double lagged_tolerance = 1e-6;  // relative residual of the lagged steps' conjugate-gradient solve
   bool subgrid = true;             // sub-grid lubrication (false: FCM alone)

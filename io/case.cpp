@@ -207,7 +207,8 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
       f.max_iterations = static_cast<int>(m.integer("max_iterations", f.max_iterations, 1, 100'000));
       f.far_field_every = static_cast<int>(m.integer("far_field_every", f.far_field_every, 1, 1000));
       f.lagged_predictor =
-          m.choice("predictor", "extrapolated", {"extrapolated", "lagged_far_field"}) == "lagged_far_field";
+          m.choice("predictor", f.lagged_predictor ? "lagged_far_field" : "extrapolated",
+                   {"extrapolated", "lagged_far_field"}) == "lagged_far_field";
       f.preconditioner_iterations =
           static_cast<int>(m.integer("preconditioner_iterations", f.preconditioner_iterations, 1, 1000));
       f.lagged_cutoff = m.number("lagged_cutoff", f.lagged_cutoff, Range::closed(2.0, 10.0));
@@ -376,8 +377,7 @@ YAML::Node to_yaml(const Case& c) {
     m["tolerance"] = number_node(c.fcm.krylov_tolerance);
     m["max_iterations"] = c.fcm.max_iterations;
     m["far_field_every"] = c.fcm.far_field_every;
-    // Written only when set, so that checkpoints of runs before the key existed keep their fingerprint.
-    if (c.fcm.lagged_predictor) m["predictor"] = "lagged_far_field";
+    m["predictor"] = c.fcm.lagged_predictor ? "lagged_far_field" : "extrapolated";
     m["preconditioner_iterations"] = c.fcm.preconditioner_iterations;
     m["lagged_cutoff"] = number_node(c.fcm.lagged_cutoff);
     m["lagged_tolerance"] = number_node(c.fcm.lagged_tolerance);
@@ -499,11 +499,27 @@ std::string yaml_differences(const std::string& old_yaml, const std::string& new
   return out.empty() ? "nothing" : out;
 }
 
+namespace {
+// A case recorded by an older version omits keys that did not exist then; what it meant is their value then, not
+// today's default. FCM cases: far_field_every (every step, 1) and predictor (extrapolated) became the fast setting's
+// defaults on 2026-12-05, and until then predictor was recorded only when it was lagged_far_field.
+YAML::Node with_former_defaults(YAML::Node recorded) {
+  const YAML::Node& view = recorded;  // reads do not add keys
+  const YAML::Node hydro = view.IsMap() ? view["hydrodynamics"] : YAML::Node();
+  if (!hydro.IsMap() || !hydro["model"].IsScalar() || hydro["model"].Scalar() != "fcm" || !hydro["fcm"].IsMap())
+    return recorded;
+  YAML::Node fcm = recorded["hydrodynamics"]["fcm"];
+  if (!hydro["fcm"]["far_field_every"]) fcm["far_field_every"] = 1;
+  if (!hydro["fcm"]["predictor"]) fcm["predictor"] = "extrapolated";
+  return recorded;
+}
+}  // namespace
+
 std::string case_changes(const std::string& recorded, const std::string& now, std::string (*resolve)(const Case&)) {
   if (recorded == now) return "";
   std::string again;
   try {
-    again = resolve(parse_case(YAML::Load(recorded), "the recorded case"));
+    again = resolve(parse_case(with_former_defaults(YAML::Load(recorded)), "the recorded case"));
   } catch (const std::exception&) {
     try {
       return yaml_differences(recorded, now);

@@ -160,6 +160,29 @@ TEST(Case, RecordedCaseChangesIgnoreImpliedKeysAndLastDigits) {
   EXPECT_EQ(case_changes("not: [a case", now, result_identity), "the recorded case is unreadable");
 }
 
+// FCM records written before the fast setting became the default (2026-12-05) lack far_field_every (older still)
+// or predictor (written only when lagged_far_field): they meant every step and the extrapolated start, so a
+// campaign point or checkpoint of such a run still matches a case that sets those values, and differs from one
+// that takes today's defaults, naming both keys.
+TEST(Case, RecordedFcmCasesMeanTheirFormerDefaults) {
+  YAML::Node root = YAML::Load(std::string(base) + "hydrodynamics: {model: fcm, fcm: {far_field_every: 1, "
+                                                   "predictor: extrapolated}}\n");
+  const std::string every_step = result_identity(parse_case(root, ""));
+  YAML::Node old_form = YAML::Load(every_step);
+  old_form["hydrodynamics"]["fcm"].remove("predictor");
+  YAML::Emitter with_key;
+  with_key << old_form;
+  EXPECT_EQ(case_changes(with_key.c_str(), every_step, result_identity), "");
+  old_form["hydrodynamics"]["fcm"].remove("far_field_every");
+  YAML::Emitter older;
+  older << old_form;
+  EXPECT_EQ(case_changes(older.c_str(), every_step, result_identity), "");
+  const std::string fast = result_identity(parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm}\n"), ""));
+  const std::string changes = case_changes(older.c_str(), fast, result_identity);
+  EXPECT_NE(changes.find("hydrodynamics.fcm.far_field_every 1 -> 10"), std::string::npos) << changes;
+  EXPECT_NE(changes.find("hydrodynamics.fcm.predictor extrapolated -> lagged_far_field"), std::string::npos) << changes;
+}
+
 TEST(Case, UnreachableVolumeFractionForTheBox) {
   // 0.72 is below the schema bound but far above random close packing: the generator must refuse it.
   YAML::Node root = YAML::Load(base);
@@ -303,7 +326,14 @@ TEST(Case, KeysGivenTwiceAndTagsAreRefused) {
 
 TEST(Case, FcmMultiRateKeys) {
   const Case d = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm}\n"), "");
-  EXPECT_EQ(d.fcm.far_field_every, 1);
+  EXPECT_EQ(d.fcm.far_field_every, 10);  // the fast setting (issue 14)
+  EXPECT_TRUE(d.fcm.lagged_predictor);
+  EXPECT_EQ(to_yaml(d)["hydrodynamics"]["fcm"]["predictor"].as<std::string>(), "lagged_far_field");
+  const Case every = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm, fcm: {far_field_every: 1, "
+                                                               "predictor: extrapolated}}\n"), "");
+  EXPECT_EQ(every.fcm.far_field_every, 1);
+  EXPECT_FALSE(every.fcm.lagged_predictor);
+  EXPECT_EQ(to_yaml_text(parse_case(to_yaml(every), "")), to_yaml_text(every));
   EXPECT_DOUBLE_EQ(d.fcm.lagged_cutoff, 2.25);
   EXPECT_DOUBLE_EQ(d.fcm.lagged_tolerance, 1e-6);
   const Case f = parse_case(YAML::Load(std::string(base) + "hydrodynamics: {model: fcm, fcm: {far_field_every: 10, "
