@@ -9,6 +9,8 @@
 #   p30, p40, p45  the FCM campaign's case (cases/phim/fcm_campaign.yaml) at phi 0.30, 0.40, 0.45 and sigma* = 1
 # Prints per case and strain: steps, seconds, s/strain of each engine, the FCM/pairwise ratio, FCM's mean Stokes
 # solves per step (summary.json fcm.stokes_solves_per_step) and the core-hours of a 20-strain run at that rate.
+# The FCM runs use the default FCM settings (since 2026-12-05 the far field every 10 steps with the lagged
+# predictor); every step as before: EXTRA "hydrodynamics.fcm.far_field_every=1 hydrodynamics.fcm.predictor=extrapolated".
 # Usage: tools/fcm_throughput.sh [STRAINS (default "0.3")] [CASES (default "d c bi")] [BUILD_DIR (default build)]
 #                               [EXTRA --set assignments for the FCM runs, e.g. "hydrodynamics.fcm.tolerance=1e-3"]
 set -euo pipefail
