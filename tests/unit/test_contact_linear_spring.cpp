@@ -113,6 +113,38 @@ TEST(LinearSpring, StickToSlipSwitchesExactlyAtTheCoulombLimit) {
   EXPECT_EQ(xi, Vec3(0.0, 0.375, 0.0));  // the stretch of a spring at the limit
 }
 
+TEST(LinearSpring, ASlipAcrossTheWholeElasticRangeSticksWhereTheSpringUnloaded) {
+  // k = 2, limit 1: the stored stretch (0, 0.5) is at the limit. Exact binary numbers throughout.
+  const Vec3 n(1.0, 0.0, 0.0);
+  // A reversal the step resolves (slip 0.25 < 2 limit / k = 1): the spring unloads and sticks where the slip left it.
+  Vec3 xi(0.0, 0.5, 0.0);
+  StickSlideResult s = stick_slide(xi, n, Vec3(0.0, -0.25, 0.0), 1.0, 2.0, 1.0);
+  EXPECT_FALSE(s.sliding);
+  EXPECT_EQ(xi, Vec3(0.0, 0.25, 0.0));
+  // A slip of 3 across the range (2 F_max / k = 1): the trial stretch (0, -2.5) points against the stored one. Not
+  // a slide at the limit the other way round, but a stick at the smallest stretch along the path: (0, 0, 0).
+  xi = Vec3(0.0, 0.5, 0.0);
+  s = stick_slide(xi, n, Vec3(0.0, -3.0, 0.0), 1.0, 2.0, 1.0);
+  EXPECT_FALSE(s.sliding);
+  EXPECT_EQ(xi, Vec3::Zero());
+  EXPECT_EQ(s.force_on_j, Vec3::Zero());
+  // An oblique slip across the range keeps the part of the stretch across it: from (0, 0.5, 0) by (0, -2, 2), the
+  // path's closest point to zero, where the force is below the limit.
+  xi = Vec3(0.0, 0.5, 0.0);
+  s = stick_slide(xi, n, Vec3(0.0, -2.0, 2.0), 1.0, 2.0, 1.0);
+  EXPECT_FALSE(s.sliding);
+  EXPECT_NEAR(xi.y(), 0.25, 1e-15);  // start - (start.slip / |slip|^2) slip = (0, 0.5) - (-1 / 8) (-2, 2)
+  EXPECT_NEAR(xi.z(), 0.25, 1e-15);
+  EXPECT_LT(2.0 * xi.norm(), 1.0);
+  // A sliding contact whose slip turns (no reversal: the trial stretch still points along the stored one) keeps
+  // sliding at the limit in the trial's direction, as before.
+  xi = Vec3(0.0, 0.5, 0.0);
+  s = stick_slide(xi, n, Vec3(0.0, -0.25, 2.0), 1.0, 2.0, 1.0);
+  EXPECT_TRUE(s.sliding);
+  EXPECT_NEAR(s.force_on_j.norm(), 1.0, 1e-15);
+  EXPECT_GT(xi.dot(Vec3(0.0, 0.5, 0.0)), 0.0);
+}
+
 TEST(LinearSpring, SlidingForceIsMuTimesNormalForceAndDissipatesMuFnV) {
   const double kn = 1.0e4, mu = 0.4, V = 2.0, dt = 1e-3;
   const auto l = law(kn, 2.0e3, 0.0, mu);
