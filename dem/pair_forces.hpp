@@ -49,10 +49,12 @@ struct ContactRecord {
   bool contact = false, sliding = false;
 };
 
-// Tangent stiffnesses of a pair's contact law at this step (PairForce::normal_stiffness, tangential_stiffness),
-// for the linearly implicit contact step.
+// Tangent stiffnesses of a pair's contact law at this step (PairForce::normal_stiffness, tangential_stiffness,
+// slip_direction), for the linearly implicit contact step: S = normal n n + tangential (I - n n - t t), t the slip
+// direction of a sliding contact (zero while it sticks).
 struct ContactStiffness {
   double normal = 0.0, tangential = 0.0;
+  Vec3 slip_direction = Vec3::Zero();
   bool any() const { return normal > 0.0 || tangential > 0.0; }
 };
 
@@ -131,7 +133,7 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
       const PairForce f = law(p.species[pr.i], p.species[pr.j], pr.geometry, m, dt, history[k]);
       const Vec3 fj = f.total_on_j();
       pair_force[k] = fj;
-      if (pair_stiffness) pair_stiffness[k] = {f.normal_stiffness, f.tangential_stiffness};
+      if (pair_stiffness) pair_stiffness[k] = {f.normal_stiffness, f.tangential_stiffness, f.slip_direction};
       if (f.normal_stiffness > 0.0) {
         compliance += std::abs(f[Contribution::contact_normal].dot(pr.geometry.n)) / f.normal_stiffness;
         ++elastic;

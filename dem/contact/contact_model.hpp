@@ -61,8 +61,13 @@ struct ContactModel {
       const double kt = normal.tangential_stiffness();
       const StickSlideResult t = stick_slide(h.tangential_stretch, g.n, u_t, dt, kt, limit);
       f.add_tangential(g, t.force_on_j, Contribution::contact_tangential);
-      f.tangential_stiffness = t.sliding || !(limit > 0.0) ? 0.0 : kt;
       f.sliding = t.sliding && limit > 0.0;
+      if (f.sliding) {  // the consistent tangent of the cap: stiffness across the slip (pair_geometry.hpp)
+        f.tangential_stiffness = kt * limit / t.trial;
+        f.slip_direction = t.force_on_j / limit;
+      } else {
+        f.tangential_stiffness = limit > 0.0 ? kt : 0.0;
+      }
     }
     rolling.apply(g, m, c.load, dt, h.rolling_stretch, f);
     return f;

@@ -53,14 +53,18 @@ struct RelativeMotion {
 // Forces on j split by origin, and the torques on i and j. The stresslet follows from d and each force part.
 // The contact law also reports its tangent stiffnesses at this state, for the linearly implicit (backward Euler)
 // contact step (docs/overdamped.md): normal_stiffness = dF_n/d(delta) of the elastic normal force, and
-// tangential_stiffness = k_t while the tangential spring sticks (0 when it slides, is frictionless or absent).
-// Both are zero out of contact; surface forces stay explicit and add none.
+// tangential_stiffness = k_t while the tangential spring sticks. While it slides at the Coulomb limit F_max, the force
+// -F_max t (t = slip_direction, along the trial stretch) responds only to a turn of the slip: tangential_stiffness is
+// then k_t F_max / |k_t xi_trial| and acts across t only (the consistent tangent of the cap, i.e. the derivative of
+// -F_max xi/|xi| with respect to xi); 0 when frictionless or absent. Both are zero out of contact; surface forces
+// stay explicit and add none.
 struct PairForce {
   std::array<Vec3, contribution_count> on_j;
   Vec3 torque_i = Vec3::Zero();
   Vec3 torque_j = Vec3::Zero();
   double normal_stiffness = 0.0;
   double tangential_stiffness = 0.0;
+  Vec3 slip_direction = Vec3::Zero();  // sliding: unit vector along the tangential force on j; else zero
   bool sliding = false;  // the tangential force sits at its Coulomb limit (a frictional contact slides)
   PairForce() {
     for (auto& f : on_j) f.setZero();

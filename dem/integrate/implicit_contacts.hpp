@@ -45,10 +45,11 @@ inline ContactOperator contact_velocity_operator(const PairGeometry& g) {
   return c;
 }
 
-// dt S = dt (k_n n n + k_t (I - n n)).
+// dt S = dt (k_n n n + k_t (I - n n - t t)), t the slip direction of a sliding contact (zero while it sticks).
 inline Mat3 step_stiffness(const Vec3& n, const ContactStiffness& k, double dt) {
   const Mat3 nn = n * n.transpose();
-  return dt * (k.normal * nn + k.tangential * (Mat3::Identity() - nn));
+  const Mat3 tt = k.slip_direction * k.slip_direction.transpose();
+  return dt * (k.normal * nn + k.tangential * (Mat3::Identity() - nn - tt));
 }
 
 // Contact velocity of the ambient flow, C V_inf, with j's image at x_i + d (Lees-Edwards: the image velocity

@@ -210,3 +210,40 @@ TEST(ImplicitContacts, NeedsTheOverdampedResistanceSolve) {
   params.integrator = Integrator::inertial;
   EXPECT_THROW(params.validate(), InputError);
 }
+
+TEST(ImplicitContacts, SlidingContactsTangentIsTheDerivativeOfTheCoulombCap) {
+  // A frictional contact sliding at V along x (normal along z): its force is -F_max x-hat; the law reports the
+  // consistent tangent of the cap, k_t F_max / |trial| across the slip only. When the slip turns by theta over the next
+  // step, F - dt S u' predicts the law's next force to O(theta^2), where a zero sliding stiffness (before issue 35)
+  // misses the whole O(theta) turn.
+  const double kn = 1.0e4, kt = 2.0 / 7.0 * kn, mu = 0.5, V = 1.0, dt = 0.05;  // slip per step 2.9 F_max / k_t
+  LinearSpringCoulomb law;
+  law.normal.p.kn = kn;
+  law.normal.p.kt = kt;
+  law.normal.p.gamma_n = 0.0;
+  law.friction.p.mu = mu;
+  const PairGeometry g = PairGeometry::from(Vec3(0.0, 0.0, 1.99), 1.0, 1.0);
+  PairHistory h;
+  PairForce f;
+  const RelativeMotion m{Vec3::Zero(), Vec3(V, 0.0, 0.0), Vec3::Zero(), Vec3::Zero()};
+  for (int step = 0; step < 3; ++step) f = law(g, m, dt, h);
+  const double f_max = mu * kn * 0.01;
+  ASSERT_TRUE(f.sliding);
+  const Vec3 ft = f[Contribution::contact_tangential];
+  EXPECT_NEAR(ft.x(), -f_max, 1e-12);
+  EXPECT_NEAR(f.slip_direction.x(), -1.0, 1e-15);
+  // trial stretch = the stretch at the cap plus this step's slip, both along x
+  EXPECT_NEAR(f.tangential_stiffness, kt * f_max / (f_max + kt * V * dt), 1e-9 * kt);
+  const ContactStiffness k{f.normal_stiffness, f.tangential_stiffness, f.slip_direction};
+  const Mat3 s = step_stiffness(g.n, k, dt);
+  EXPECT_LT((s * Vec3(1.0, 0.0, 0.0)).norm(), 1e-15 * s.norm());  // no stiffness along the slip
+  for (const double theta : {1e-2, 1e-3}) {
+    PairHistory next = h;
+    const Vec3 turned(V * std::cos(theta), V * std::sin(theta), 0.0);
+    const PairForce f2 = law(g, RelativeMotion{Vec3::Zero(), turned, Vec3::Zero(), Vec3::Zero()}, dt, next);
+    const Vec3 change = f2[Contribution::contact_tangential] - ft;
+    const Vec3 predicted = -(s * turned);
+    EXPECT_GT(change.norm(), 0.5 * f_max * theta);                 // the force turns with the slip
+    EXPECT_LT((change - predicted).norm(), 2.0 * theta * change.norm());  // predicted to first order
+  }
+}
