@@ -54,11 +54,6 @@ PairwiseResistanceModel::PairwiseResistanceModel(const Particles& p, const Flow&
                                                  const ResistanceSolverParams& params)
     : flow_(flow), params_(params), classes_(p.radius), solver_(classes_.radius, params) {}
 
-ResistanceSolver& PairwiseResistanceModel::force_solver() {
-  if (!force_solver_) force_solver_.emplace(classes_.radius, params_);
-  return *force_solver_;
-}
-
 HydroResponse& PairwiseResistanceModel::solve(const HydroLoad& load, double rate) {
   const Particles& p = load.particles;
   solver_.solve(p, classes_.of_particle, load.pairs, hydro::ambient_flow(flow_, rate, load.box.length().y()),
@@ -67,24 +62,19 @@ HydroResponse& PairwiseResistanceModel::solve(const HydroLoad& load, double rate
 }
 
 std::pair<HydroResponse&, HydroResponse&> PairwiseResistanceModel::solve_parts(const HydroLoad& load) {
-  const Particles& p = load.particles;
   const double ly = load.box.length().y();
-  if (zero_.size() != p.size()) zero_.assign(p.size(), Vec3::Zero());
-  // Velocities, stress and the implicit contact changes are linear in (gammadot, F).
-  solver_.solve(p, classes_.of_particle, load.pairs, hydro::ambient_flow(flow_, 1.0, ly), zero_, zero_, out_,
-                load.where, load.implicit);
-  force_solver().solve(p, classes_.of_particle, load.pairs, hydro::ambient_flow(flow_, 0.0, ly), load.force,
-                       load.torque, force_out_, load.where, load.implicit);
+  // Velocities, stress and the implicit contact changes are linear in (gammadot, F): one matrix, two loads.
+  solver_.solve_parts(load.particles, classes_.of_particle, load.pairs, hydro::ambient_flow(flow_, 1.0, ly),
+                      hydro::ambient_flow(flow_, 0.0, ly), load.force, load.torque, out_, force_out_, load.where,
+                      load.implicit);
   return {out_, force_out_};
 }
 
 std::vector<double> PairwiseResistanceModel::warm_start_state() const {
   const Eigen::VectorXd& dv = solver_.disturbance();
   std::vector<double> s(dv.data(), dv.data() + dv.size());
-  if (force_solver_ && force_solver_->disturbance().size() == dv.size()) {
-    const Eigen::VectorXd& dc = force_solver_->disturbance();
-    s.insert(s.end(), dc.data(), dc.data() + dc.size());
-  }
+  const Eigen::VectorXd& dc = solver_.forced_disturbance();
+  if (dc.size() == dv.size()) s.insert(s.end(), dc.data(), dc.data() + dc.size());
   return s;
 }
 
@@ -92,7 +82,7 @@ void PairwiseResistanceModel::set_warm_start_state(const std::vector<double>& st
   const auto size = static_cast<Eigen::Index>(6 * n);
   if (state.size() >= 6 * n) solver_.set_warm_start(Eigen::Map<const Eigen::VectorXd>(state.data(), size));
   if (parts && state.size() == 12 * n)
-    force_solver().set_warm_start(Eigen::Map<const Eigen::VectorXd>(state.data() + 6 * n, size));
+    solver_.set_forced_warm_start(Eigen::Map<const Eigen::VectorXd>(state.data() + 6 * n, size));
 }
 
 ExplicitPairwiseModel::ExplicitPairwiseModel(const Particles& p, const Flow& flow, bool lubrication,

@@ -42,20 +42,17 @@ class PairwiseResistanceModel final : public HydrodynamicModel {
   double pair_range() const override { return params_.lubrication.outer_cutoff; }
   HydroResponse& solve(const HydroLoad& load, double rate) override;
   std::pair<HydroResponse&, HydroResponse&> solve_parts(const HydroLoad& load) override;
-  // The solvers' last disturbance velocities: 6 per particle, 12 after solve_parts (the rate-driven problem first).
+  // The solver's last disturbance velocities: 6 per particle, 12 after solve_parts (the rate-driven part first).
   std::vector<double> warm_start_state() const override;
   void set_warm_start_state(const std::vector<double>& state, std::size_t n, bool parts) override;
   const ResistanceSolver& solver() const { return solver_; }
 
  private:
-  ResistanceSolver& force_solver();
   Flow flow_;
   ResistanceSolverParams params_;
   RadiusClasses classes_;
   ResistanceSolver solver_;
-  std::optional<ResistanceSolver> force_solver_;  // imposed stress: the force-driven problem
   SolveResult out_, force_out_;
-  std::vector<Vec3> zero_;
 };
 
 class ExplicitPairwiseModel final : public HydrodynamicModel {

@@ -114,39 +114,44 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
   }
 }
 
-void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
-                             const hydro::WavyShear& flow, const std::vector<Vec3>& force,
-                             const std::vector<Vec3>& torque, SolveResult& out, std::string_view context,
-                             const ImplicitContacts& implicit) {
+void ResistanceSolver::check(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
+                             const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
+                             const ImplicitContacts& implicit) const {
   const std::size_t n = p.size();
   if (species.size() != n || force.size() != n || torque.size() != n || p.position.size() != n)
     throw InputError("resistance solver: species, force and torque need one entry per particle");
   law_.check(p, species, pairs);
   if (implicit.enabled() && (implicit.stiffness->size() != pairs.size() || !(implicit.dt >= 0.0)))
     throw InputError("resistance solver: implicit contacts need one stiffness per pair and dt >= 0");
+}
 
-  assemble(p, species, pairs, flow, force, torque, implicit);
+void ResistanceSolver::factorize() {
+  if (params_.solver == LinearSolver::conjugate_gradient)
+    cg_.prepare(matrix_);
+  else
+    cholesky_.factorize(matrix_);
+}
 
-  const Eigen::Index size = 6 * static_cast<Eigen::Index>(n);
-  if (!params_.warm_start || previous_.size() != size) previous_ = Eigen::VectorXd::Zero(size);
+void ResistanceSolver::solve_assembled(const Eigen::VectorXd& b, Eigen::VectorXd& x, HydroResponse& out,
+                                       std::string_view context) {
+  const Eigen::Index size = b.size();
+  if (!params_.warm_start || x.size() != size) x = Eigen::VectorXd::Zero(size);
   out.iterations = 0;
   bool converged = true;
   if (params_.solver == LinearSolver::conjugate_gradient) {
-    cg_.prepare(matrix_);
     const ConjugateGradientReport report =
-        cg_.solve(matrix_, rhs_, previous_, params_.tolerance, params_.max_iterations, params_.preconditioner);
+        cg_.solve(matrix_, b, x, params_.tolerance, params_.max_iterations, params_.preconditioner);
     out.iterations = report.iterations;
     out.residual = report.residual;
     converged = report.converged;
   } else {
-    cholesky_.factorize(matrix_);
-    cholesky_.solve(rhs_, previous_);
-    matrix_.multiply(previous_, check_);
-    const double b_norm = rhs_.norm();
-    out.residual = b_norm > 0.0 ? (rhs_ - check_).norm() / b_norm : 0.0;
+    cholesky_.solve(b, x);
+    matrix_.multiply(x, check_);
+    const double b_norm = b.norm();
+    out.residual = b_norm > 0.0 ? (b - check_).norm() / b_norm : 0.0;
     converged = std::isfinite(out.residual);
   }
-  if (!converged || !previous_.allFinite()) {
+  if (!converged || !x.allFinite()) {
     std::ostringstream s;
     s << "resistance solve failed";
     if (!context.empty()) s << " (" << context << ")";
@@ -155,26 +160,60 @@ void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species
         << " (tolerance " << params_.tolerance << ", max_iterations " << params_.max_iterations << ")";
     else
       s << ": sparse Cholesky solution not finite (relative residual " << out.residual << ")";
-    previous_.resize(0);  // do not warm-start from a failed solve
+    x.resize(0);  // do not warm-start from a failed solve
     throw NumericalError(s.str());
   }
+}
 
-  report_solution(p, species, pairs, flow, out, implicit);
+void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
+                             const hydro::WavyShear& flow, const std::vector<Vec3>& force,
+                             const std::vector<Vec3>& torque, SolveResult& out, std::string_view context,
+                             const ImplicitContacts& implicit) {
+  check(p, species, pairs, force, torque, implicit);
+  assemble(p, species, pairs, flow, force, torque, implicit);
+  factorize();
+  solve_assembled(rhs_, previous_, out, context);
+  report_solution(p, species, pairs, flow, previous_, true, out, implicit);
+}
+
+void ResistanceSolver::solve_parts(const Particles& p, const std::vector<int>& species,
+                                   const std::vector<ActivePair>& pairs, const hydro::WavyShear& unit_flow,
+                                   const hydro::WavyShear& still_flow, const std::vector<Vec3>& force,
+                                   const std::vector<Vec3>& torque, SolveResult& unit_out, SolveResult& force_out,
+                                   std::string_view context, const ImplicitContacts& implicit) {
+  check(p, species, pairs, force, torque, implicit);
+  const std::size_t n = p.size();
+  zero_.assign(n, Vec3::Zero());
+  assemble(p, species, pairs, unit_flow, zero_, zero_, implicit);
+  factorize();
+  solve_assembled(rhs_, previous_, unit_out, context);
+  report_solution(p, species, pairs, unit_flow, previous_, true, unit_out, implicit);
+  // The same matrix; the load of the contact forces alone (Faxen of the still flow, no strain forces).
+  forced_rhs_.resize(6 * static_cast<Eigen::Index>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = p.radius[i];
+    forced_rhs_.segment<3>(6 * static_cast<Eigen::Index>(i)) =
+        force[i] + hydro::stokes_resistance(a).translation * (a * a / 6.0) * still_flow.velocity_laplacian(p.position[i]);
+    forced_rhs_.segment<3>(6 * static_cast<Eigen::Index>(i) + 3) = torque[i];
+  }
+  solve_assembled(forced_rhs_, forced_previous_, force_out, context);
+  report_solution(p, species, pairs, still_flow, forced_previous_, false, force_out, implicit);
 }
 
 void ResistanceSolver::report_solution(const Particles& p, const std::vector<int>& species,
                                        const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
-                                       SolveResult& out, const ImplicitContacts& implicit) {
+                                       const Eigen::VectorXd& x, bool strain_driven, SolveResult& out,
+                                       const ImplicitContacts& implicit) {
   const std::size_t n = p.size();
   out.velocity.resize(n);
   out.angular_velocity.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const auto dv = previous_.segment<6>(6 * static_cast<Eigen::Index>(i));
+    const auto dv = x.segment<6>(6 * static_cast<Eigen::Index>(i));
     out.velocity[i] = flow.velocity(p.position[i]) + dv.head<3>();
     out.angular_velocity[i] = flow.angular_velocity(p.position[i]) + dv.tail<3>();
   }
   out.lubricated_pairs = lubricated_;
-  accumulate_stress(p, species, pairs, flow, out, implicit);
+  accumulate_stress(p, species, pairs, flow, x, strain_driven, out, implicit);
 }
 
 void ResistanceSolver::explicit_forces(const Particles& p, const std::vector<int>& species,
@@ -190,7 +229,7 @@ void ResistanceSolver::explicit_forces(const Particles& p, const std::vector<int
   previous_ = dv;
   out.iterations = 0;
   out.residual = 0.0;
-  report_solution(p, species, pairs, flow, out);
+  report_solution(p, species, pairs, flow, previous_, true, out);
 }
 
 double ResistanceSolver::relaxation_rate(const std::vector<double>& mass, const std::vector<double>& moment) const {
@@ -208,7 +247,8 @@ double ResistanceSolver::relaxation_rate(const std::vector<double>& mass, const 
 
 void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<int>& species,
                                          const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
-                                         SolveResult& out, const ImplicitContacts& implicit) {
+                                         const Eigen::VectorXd& x, bool strain_driven, SolveResult& out,
+                                         const ImplicitContacts& implicit) {
   const std::ptrdiff_t np = static_cast<std::ptrdiff_t>(pairs.size());
   resize_with_headroom(out.lubrication_force_on_j, np);
   if (implicit.enabled())
@@ -217,7 +257,6 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
     out.contact_change_on_j.clear();
   const bool dipole = params_.lubrication_stress == LubricationStress::force_dipole;
   if (!dipole) pair_stress_.resize(np);
-  const Eigen::VectorXd& x = previous_;
   // F_j^lub = -(R_ji dV_i + R_jj dV_j) + (R_FE : E)_j from the stored blocks; each pair writes its own slots.
 #pragma omp parallel for schedule(static) if (np > 256)
   for (std::ptrdiff_t k = 0; k < np; ++k) {
@@ -231,8 +270,8 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
     const Vector6 dv_i = x.segment<6>(6 * static_cast<Eigen::Index>(pr.i));
     const Vector6 dv_j = x.segment<6>(6 * static_cast<Eigen::Index>(pr.j));
     // The blocks hold lubrication + implicit contact terms; the contact change is taken out of the force on j.
-    const Vector6 f_j =
-        -(matrix_.coupling()[l].transpose() * dv_i + self_j_[l].unpacked() * dv_j) + strain_[l].segment<6>(6);
+    Vector6 f_j = -(matrix_.coupling()[l].transpose() * dv_i + self_j_[l].unpacked() * dv_j);
+    if (strain_driven) f_j += strain_[l].segment<6>(6);
     out.lubrication_force_on_j[k] = f_j.head<3>();
     if (stiff(implicit, k)) {
       hydro::Vector12 dv;
