@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
 #include "core/error.hpp"
 #include "dem/hydro/stokes_drag.hpp"
+#include "dem/integrate/pair_motion.hpp"
 #include "dem/integrate/pairwise_models.hpp"
 
 namespace suspend {
@@ -132,7 +134,8 @@ double Simulation::overdamped_velocities(const HydroLoad& load) {
     p.angular_velocity[i] = response->angular_velocity[i];
     max_speed = std::max(max_speed, (p.velocity[i] - f.velocity(p.position[i])).norm());
   }
-  finish_stress(response->stress, response->contact_change_on_j);
+  finish_stress(response->stress);
+  contact_change_ = &response->contact_change_on_j;
   return max_speed;
 }
 
@@ -163,21 +166,28 @@ double Simulation::inertial_velocities(const HydroLoad& load) {
     p.angular_velocity[i] = Vec3(v[12 * i + 3], v[12 * i + 4], v[12 * i + 5]) + half * a_ang;
     max_speed = std::max(max_speed, (p.velocity[i] - f.velocity(p.position[i])).norm());
   }
-  finish_stress(hydro.stress, {});
+  finish_stress(hydro.stress);
+  contact_change_ = nullptr;
   return max_speed;
 }
 
-void Simulation::finish_stress(const StressTensors& hydrodynamic, const std::vector<Vec3>& contact_change_on_j) {
+void Simulation::finish_stress(const StressTensors& hydrodynamic) {
   // Contact virial + the model's sums (hydrodynamic, lubrication; with implicit contacts the contacts' change over
-  // the step, whose forces also go to the contact records).
+  // the step, whose forces evaluate() adds to the contact records once the step's solve is final).
   stress_ = contacts_.sums().virial;
   for (std::size_t c = 0; c < contribution_count; ++c) stress_.part[c] += hydrodynamic.part[c];
-  for (std::size_t k = 0; k < contact_change_on_j.size(); ++k)
-    contacts_.add_contact_change(k, contact_change_on_j[k]);
   for (auto& m : stress_.part) m /= box_.volume();
   // The fluid's 2 eta <E_inf>: the wave averages to zero over whole periods.
   stress_[Contribution::hydrodynamic](0, 1) += rate_;
   stress_[Contribution::hydrodynamic](1, 0) += rate_;
+}
+
+double Simulation::pair_rate(double rate) const {
+  const TimeStepParams& ts = params_.time_step;
+  if (ts.mode == TimeStepParams::Mode::fixed || ts.bound != TimeStepParams::Bound::pairs) return 0.0;
+  const PairMotionLimits limits{contact_displacement(ts, params_.contact, contacts_.sums().mean_compliance()),
+                                ts.max_displacement, contact_range(params_.contact), ts.gap_change};
+  return pair_motion_rate(contacts_.pairs(), state_.particles, rate * box_.length().y(), contacts_.records(), limits);
 }
 
 double Simulation::next_time_step(double max_speed) const {
@@ -195,7 +205,7 @@ double Simulation::next_time_step(double max_speed) const {
     dt = std::min(dt, ts.stability * std::sqrt(m_min / k));
     if (relaxation_rate_ > 0.0) dt = std::min(dt, ts.stability / relaxation_rate_);
   } else if (!ts.implicit_contacts) {
-    dt = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt);
+    dt = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt, 0.0, pair_rate(rate_));
   }
   return std::min(dt, params_.flow.max_time_step());
 }
@@ -223,7 +233,7 @@ void Simulation::evaluate() {
   if (params_.time_step.implicit_contacts) {
     dt_ = overdamped_time_step(params_.time_step, params_.contact, state_.shear_rate,
                                max_nonaffine_speed(p, flow(state_.shear_rate)), a_min_, state_.last_dt,
-                               contacts_.sums().mean_compliance());
+                               contacts_.sums().mean_compliance(), pair_rate(state_.shear_rate));
     dt_ = std::min(dt_, params_.flow.max_time_step());
     implicit = {&contacts_.stiffness(), dt_};
   }
@@ -231,8 +241,22 @@ void Simulation::evaluate() {
   // then the stress.
   rate_ = params_.flow.control == FlowControl::rate ? params_.flow.rate(state_.time, state_.accumulated_strain)
                                                     : state_.shear_rate;
-  const HydroLoad l = load(implicit);
-  const double max_speed = inertial ? inertial_velocities(l) : overdamped_velocities(l);
+  double max_speed = inertial ? inertial_velocities(load(implicit)) : overdamped_velocities(load(implicit));
+  // Implicit contacts: the step was chosen from the last step's motion. When this step's own motion needs a much
+  // shorter one (the rate under imposed stress jumps as a force chain lets go, a contact opens), solve again with it.
+  const TimeStepParams& ts = params_.time_step;
+  for (int again = 0; implicit.enabled() && ts.mode == TimeStepParams::Mode::adaptive && again < 4; ++again) {
+    const double needed = std::min(
+        overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, std::numeric_limits<double>::infinity(),
+                             contacts_.sums().mean_compliance(), pair_rate(rate_)),
+        params_.flow.max_time_step());
+    if (!(dt_ > step_overshoot * needed)) break;
+    dt_ = needed;
+    implicit.dt = dt_;
+    max_speed = overdamped_velocities(load(implicit));
+  }
+  if (contact_change_)
+    for (std::size_t k = 0; k < contact_change_->size(); ++k) contacts_.add_contact_change(k, (*contact_change_)[k]);
   // 5. Checks.
   if (!std::isfinite(rate_)) fail("the stress control gave a non-finite shear rate");
   for (std::size_t i = 0; i < n; ++i)

@@ -124,8 +124,11 @@ class Simulation {
   HydroLoad load(const ImplicitContacts& implicit) const;
   double overdamped_velocities(const HydroLoad& load);  // return the largest non-affine speed
   double inertial_velocities(const HydroLoad& load);
-  void finish_stress(const StressTensors& hydrodynamic, const std::vector<Vec3>& contact_change_on_j);
+  void finish_stress(const StressTensors& hydrodynamic);
   double next_time_step(double max_speed) const;
+  // bound = pairs: the pairs' relative motion per unit step (dem/integrate/pair_motion.hpp) at the particles'
+  // velocities, Lees-Edwards images moving at `rate` L_y; 0 otherwise.
+  double pair_rate(double rate) const;
 
   SimulationState state_;
   Box box_;
@@ -143,6 +146,9 @@ class Simulation {
   std::vector<Vec3> nonaffine_;
   StressTensors stress_;
   double dt_ = 0.0;
+  // Implicit contacts: a step is solved again with the step its own motion allows when it exceeds that by this factor.
+  static constexpr double step_overshoot = 2.0;
+  const std::vector<Vec3>* contact_change_ = nullptr;  // the final solve's contact changes (model-owned)
   bool evaluated_ = false;
   double contact_seconds_ = 0.0;
 };

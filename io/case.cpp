@@ -286,7 +286,15 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     ts.max_displacement = t.number("max_displacement", ts.max_displacement, Range::positive());
     ts.max = t.number("max", ts.max, Range::positive());
     ts.stability = t.number("stability", ts.stability, Range::open_closed(0.0, 1.0));
-    ts.implicit_contacts = t.choice("contacts", "explicit", {"explicit", "implicit"}) == "implicit";
+    // Implicit contacts wherever the model has its overdamped solve (docs/overdamped.md 4b): the pairwise resistance
+    // solve (lubrication enabled) or FCM's sub-grid pair terms.
+    const bool can_be_implicit = c.simulation.integrator == Integrator::overdamped &&
+                                 (c.hydrodynamics == "fcm" ? c.fcm.subgrid : c.simulation.lubrication);
+    ts.implicit_contacts =
+        t.choice("contacts", can_be_implicit ? "implicit" : "explicit", {"explicit", "implicit"}) == "implicit";
+    ts.bound = t.choice("bound", "pairs", {"pairs", "particles"}) == "particles" ? TimeStepParams::Bound::particles
+                                                                               : TimeStepParams::Bound::pairs;
+    ts.gap_change = t.number("gap_change", ts.gap_change, Range::open_closed(0.0, 1.0));
     ts.growth = t.number("growth", ts.growth, Range::open_closed(1.0, 10.0));
     ts.displacement_per_compliance =
         t.number("displacement_per_compliance", ts.displacement_per_compliance, Range::positive());
@@ -423,6 +431,8 @@ YAML::Node to_yaml(const Case& c) {
   r["time_step"]["contacts"] = ts.implicit_contacts ? "implicit" : "explicit";
   r["time_step"]["growth"] = number_node(ts.growth);
   r["time_step"]["displacement_per_compliance"] = number_node(ts.displacement_per_compliance);
+  r["time_step"]["bound"] = ts.bound == TimeStepParams::Bound::pairs ? "pairs" : "particles";
+  r["time_step"]["gap_change"] = number_node(ts.gap_change);
   if (ts.min_displacement > 0.0) r["time_step"]["min_displacement"] = number_node(ts.min_displacement);
   r["output"]["series_every"] = number_node(c.run.output.series_every);
   if (c.simulation.flow.oscillatory()) r["output"]["series_per_cycle"] = c.run.output.series_per_cycle;
@@ -505,6 +515,10 @@ namespace {
 // defaults on 2026-12-05, and until then predictor was recorded only when it was lagged_far_field.
 YAML::Node with_former_defaults(YAML::Node recorded) {
   const YAML::Node& view = recorded;  // reads do not add keys
+  // Recorded before issue 35: every particle's non-affine displacement bounded by the contact displacement.
+  const YAML::Node run = view.IsMap() ? view["run"] : YAML::Node();
+  if (run.IsMap() && run["time_step"].IsMap() && !run["time_step"]["bound"])
+    recorded["run"]["time_step"]["bound"] = "particles";
   const YAML::Node hydro = view.IsMap() ? view["hydrodynamics"] : YAML::Node();
   if (!hydro.IsMap() || !hydro["model"].IsScalar() || hydro["model"].Scalar() != "fcm" || !hydro["fcm"].IsMap())
     return recorded;

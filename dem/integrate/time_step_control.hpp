@@ -3,15 +3,21 @@
 //
 // Adaptive mode bounds dt by
 //  * the strain increment: |gammadot| dt <= max;
-//  * the non-affine displacement: |U - U_inf| dt <= max_displacement (and, for a law with a finite contact range
-//    such as the Hertz roughness layer h_r, <= a tenth of that range, so a pair cannot cross the layer in a step);
+//  * the non-affine displacement of every particle: |U - U_inf| dt <= max_displacement;
+//  * bound = pairs (default): the relative motion of every interacting pair (pair_motion.hpp): a contact's normal
+//    displacement at most the contact displacement below, its slip at most max_displacement, and an approaching
+//    pair closes at most a fraction gap_change of its distance to contact. bound = particles (the rule before
+//    issue 35): every particle's non-affine displacement at most the contact displacement, which is what a pair in
+//    contact needs, so the fastest particle anywhere sets the step for all;
+//  * the contact displacement: max_displacement, for a law with a finite contact range such as the Hertz roughness
+//    layer h_r at most a tenth of that range (so a pair cannot cross the layer in a step), and with implicit
+//    contacts at most `displacement_per_compliance` mean contact compliance lengths (F_n / (dF_n/d delta), the mean
+//    overlap of linear springs): with steps much longer than the overlaps a force chain's contacts open and close
+//    every step (each closing is an explicit, unresolved collision) and lose their friction history;
 //  * explicit contacts: the fastest contact relaxation, dt <= stability x 6 pi eta a_min / k (k: stiffness_scale);
-//  * implicit contacts (implicit_contacts.hpp): no stability bound, the stiff modes are unconditionally stable; but
-//    the non-affine displacement stays below `displacement_per_compliance` mean contact compliance lengths
-//    (F_n / (dF_n/d delta), the mean overlap of linear springs): with steps much longer than the overlaps a force
-//    chain's contacts open and close every step (each closing is an explicit, unresolved collision) and lose their
-//    friction history. The step is taken before its velocities are known, from the previous step's speed and
-//    contacts, and may grow by at most a factor `growth` per step; the first step of a run uses the explicit bound.
+//  * implicit contacts (implicit_contacts.hpp): no stability bound, the stiff modes are unconditionally stable. The
+//    step is taken before its velocities are known, from the previous step's velocities and this step's contacts,
+//    and may grow by at most a factor `growth` per step; the first step of a run uses the explicit bound.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -35,6 +41,9 @@ struct TimeStepParams {
   // Implicit contacts: the compliance bound never below this (a_1). Where the flow stops (the turning points of an
   // oscillation) the contacts relax and their compliance goes to zero, and the step with it; 0: no floor.
   double min_displacement = 0.0;
+  enum class Bound { pairs, particles };
+  Bound bound = Bound::pairs;  // adaptive: what the contact displacement bounds (see above)
+  double gap_change = 0.1;     // bound = pairs: fraction of its distance to contact a pair may close per step
   void validate() const {
     if (mode == Mode::fixed && !(fixed > 0.0)) throw InputError("run.time_step.fixed must be > 0");
     if (!(max_displacement > 0.0)) throw InputError("run.time_step.max_displacement must be > 0");
@@ -44,6 +53,7 @@ struct TimeStepParams {
       throw InputError("run.time_step.displacement_per_compliance must be > 0");
     if (!(min_displacement >= 0.0 && min_displacement <= max_displacement))
       throw InputError("run.time_step.min_displacement must lie in [0, max_displacement]");
+    if (!(gap_change > 0.0 && gap_change <= 1.0)) throw InputError("run.time_step.gap_change must lie in (0, 1]");
   }
 };
 
@@ -61,19 +71,30 @@ inline double explicit_contact_time_step(const TimeStepParams& ts, const Contact
   return ts.stability * 6.0 * std::numbers::pi * a_min / stiffness_scale(law);
 }
 
-// Adaptive overdamped step for shear rate `rate` and largest non-affine speed `max_speed` (of this step for
-// explicit contacts, of the last one for implicit contacts, whose step precedes the solve); `compliance`: the mean
-// contact compliance length (PairSums::mean_compliance; 0 without contacts).
-inline double overdamped_time_step(const TimeStepParams& ts, const ContactLaw& law, double rate, double max_speed,
-                                   double a_min, double last_dt, double compliance = 0.0) {
-  if (ts.mode == TimeStepParams::Mode::fixed) return ts.fixed;
-  double dt = std::abs(rate) > 0.0 ? ts.max / std::abs(rate) : ts.max;
+// The normal displacement a contact may take in one step (a_1): max_displacement, at most a tenth of the law's range,
+// and with implicit contacts at most displacement_per_compliance x `compliance` (the mean contact compliance length,
+// PairSums::mean_compliance; 0 without contacts), floored at min_displacement.
+inline double contact_displacement(const TimeStepParams& ts, const ContactLaw& law, double compliance) {
   double displacement = ts.max_displacement;
   const double range = contact_range(law);
   if (range > 0.0) displacement = std::min(displacement, 0.1 * range);
   if (ts.implicit_contacts && compliance > 0.0)
     displacement = std::max(std::min(displacement, ts.displacement_per_compliance * compliance), ts.min_displacement);
+  return displacement;
+}
+
+// Adaptive overdamped step for shear rate `rate`, largest non-affine speed `max_speed` and, with bound = pairs,
+// `pair_rate` = pair_motion_rate() with the contact displacement above (both of this step for explicit contacts, of
+// the last one for implicit contacts, whose step precedes the solve); `compliance`: the mean contact compliance
+// length.
+inline double overdamped_time_step(const TimeStepParams& ts, const ContactLaw& law, double rate, double max_speed,
+                                   double a_min, double last_dt, double compliance = 0.0, double pair_rate = 0.0) {
+  if (ts.mode == TimeStepParams::Mode::fixed) return ts.fixed;
+  double dt = std::abs(rate) > 0.0 ? ts.max / std::abs(rate) : ts.max;
+  const bool pairs = ts.bound == TimeStepParams::Bound::pairs;
+  const double displacement = pairs ? ts.max_displacement : contact_displacement(ts, law, compliance);
   if (max_speed > 0.0) dt = std::min(dt, displacement / max_speed);
+  if (pairs && pair_rate > 0.0) dt = std::min(dt, 1.0 / pair_rate);
   const double explicit_bound = explicit_contact_time_step(ts, law, a_min);
   if (!ts.implicit_contacts) return std::min(dt, explicit_bound);
   return last_dt > 0.0 ? std::min(dt, ts.growth * last_dt) : std::min(dt, explicit_bound);

@@ -349,3 +349,45 @@ TEST(Case, FcmMultiRateKeys) {
   EXPECT_NE(error_of(base, {"hydrodynamics.fcm.lagged_tolerance=0"}).find("hydrodynamics.fcm.lagged_tolerance"),
             std::string::npos);
 }
+
+TEST(Case, ContactsAreImplicitWhereverTheModelSolvesAndTheStepFollowsThePairs) {
+  // Default: implicit contact springs with the resistance solve (lubrication) or FCM's sub-grid terms; explicit
+  // for Stokes drag alone and for the inertial integrator, which have no overdamped solve to hold them.
+  const Case lubricated = parse_case(YAML::Load(base), "");
+  EXPECT_TRUE(lubricated.simulation.time_step.implicit_contacts);
+  EXPECT_EQ(lubricated.simulation.time_step.bound, TimeStepParams::Bound::pairs);
+  EXPECT_DOUBLE_EQ(lubricated.simulation.time_step.gap_change, 0.1);
+  EXPECT_DOUBLE_EQ(lubricated.simulation.resistance.tolerance, 1e-6);
+  YAML::Node drag = YAML::Load(base);
+  apply_override(drag, "hydrodynamics.lubrication.enabled=false");
+  EXPECT_FALSE(parse_case(drag, "").simulation.time_step.implicit_contacts);
+  YAML::Node inertial = YAML::Load(base);
+  apply_override(inertial, "run.integrator=inertial");
+  EXPECT_FALSE(parse_case(inertial, "").simulation.time_step.implicit_contacts);
+  YAML::Node fcm = YAML::Load(base);
+  apply_override(fcm, "hydrodynamics.model=fcm");
+  EXPECT_TRUE(parse_case(fcm, "").simulation.time_step.implicit_contacts);
+  apply_override(fcm, "hydrodynamics.fcm.subgrid=false");
+  EXPECT_FALSE(parse_case(fcm, "").simulation.time_step.implicit_contacts);
+  // Bad values name the key.
+  EXPECT_NE(error_of(base, {"run.time_step.bound=cells"}).find("run.time_step.bound"), std::string::npos);
+  EXPECT_NE(error_of(base, {"run.time_step.gap_change=0"}).find("run.time_step.gap_change"), std::string::npos);
+  EXPECT_NE(error_of(base, {"run.time_step.gap_change=2"}).find("run.time_step.gap_change"), std::string::npos);
+}
+
+TEST(Case, RecordedCasesWithoutAStepBoundMeanTheParticleBound) {
+  // A case recorded before run.time_step.bound existed (checkpoint fingerprint, campaign point) was run with every
+  // particle's displacement bounded: it is read so, and differs from the new default by that key alone.
+  YAML::Node root = YAML::Load(base);
+  apply_override(root, "run.time_step.bound=particles");
+  const std::string former = result_identity(parse_case(root, ""));
+  YAML::Node old_form = YAML::Load(former);
+  old_form["run"]["time_step"].remove("bound");
+  old_form["run"]["time_step"].remove("gap_change");
+  YAML::Emitter recorded;
+  recorded << old_form;
+  EXPECT_EQ(case_changes(recorded.c_str(), former, result_identity), "");
+  const std::string now = result_identity(parse_case(YAML::Load(base), ""));
+  const std::string changes = case_changes(recorded.c_str(), now, result_identity);
+  EXPECT_NE(changes.find("run.time_step.bound particles -> pairs"), std::string::npos) << changes;
+}

@@ -1,0 +1,72 @@
+// The step bound from the relative motion of the interacting pairs (dem/integrate/pair_motion.hpp).
+#include <gtest/gtest.h>
+
+#include "dem/integrate/pair_motion.hpp"
+#include "dem/integrate/time_step_control.hpp"
+#include "tests/simulation_state.hpp"
+
+using namespace suspend;
+
+namespace {
+
+const PairMotionLimits limits{5e-4, 2e-3, 5e-3, 0.1};
+
+// Particles i = 0, j = 1 at distance r along x, radii 1.
+Particles pair_at(double r) {
+  Particles p = test_support::state_of({Vec3(5.0, 5.0, 5.0), Vec3(5.0 + r, 5.0, 5.0)}, {1.0, 1.0}).particles;
+  return p;
+}
+
+ActivePair active(const Particles& p, int y_images = 0) {
+  return {0, 1, y_images, PairGeometry::from(p.position[1] - p.position[0], 1.0, 1.0)};
+}
+
+}  // namespace
+
+TEST(PairMotion, AContactIsBoundByItsNormalMotionAndItsSlip) {
+  Particles p = pair_at(2.001);  // gap 1e-3 inside the roughness range 5e-3
+  p.velocity[1] = Vec3(0.1, 0.0, 0.0);  // closing along n at 0.1
+  const std::vector<ActivePair> pairs{active(p)};
+  std::vector<ContactRecord> records(1);
+  records[0].contact = true;
+  EXPECT_DOUBLE_EQ(pair_motion_rate(pairs, p, 0.0, records, limits), 0.1 / 5e-4);
+  p.velocity[1] = Vec3(0.0, 0.6, 0.0);  // sliding across n at 0.6
+  EXPECT_DOUBLE_EQ(pair_motion_rate(pairs, p, 0.0, records, limits), 0.6 / 2e-3);
+  // Rolling without slip (contact point at rest) and a rigid rotation of the pair: nothing to bound.
+  p.velocity[1] = Vec3::Zero();
+  p.angular_velocity[0] = p.angular_velocity[1] = Vec3(0.0, 0.0, 0.7);
+  p.velocity[1] = Vec3(0.0, 0.0, 0.7).cross(p.position[1] - p.position[0]);
+  EXPECT_NEAR(pair_motion_rate(pairs, p, 0.0, records, limits), 0.0, 1e-12);
+}
+
+TEST(PairMotion, AnApproachingPairClosesAFractionOfItsDistanceToContact) {
+  Particles p = pair_at(2.205);  // gap 0.205: 0.2 beyond the contact range
+  p.velocity[0] = Vec3(0.05, 0.0, 0.0);
+  p.velocity[1] = Vec3(-0.05, 3.0, 0.0);  // the tangential motion of a pair out of contact is not bound
+  const std::vector<ActivePair> pairs{active(p)};
+  const std::vector<ContactRecord> records(1);
+  EXPECT_NEAR(pair_motion_rate(pairs, p, 0.0, records, limits), 0.1 / (5e-4 + 0.1 * 0.2), 1e-12);
+  // The same pair across the sheared y face: its image moves at u_j - y_images gammadot L_y.
+  Particles q = pair_at(2.205);
+  q.velocity[1] = Vec3(1.5, 0.0, 0.0);  // j's own velocity; its image (y_images 1, image velocity 1.5) is at rest
+  EXPECT_NEAR(pair_motion_rate({active(q, 1)}, q, 1.5, records, limits), 0.0, 1e-15);
+}
+
+TEST(PairMotion, PairsBoundFollowsTheFastestPairNotTheFastestParticle) {
+  TimeStepParams ts;
+  ts.implicit_contacts = true;
+  const ContactLaw law = ComposedLaw<HertzAdhesiveCoulomb>{};
+  const double h_r = contact_range(law);
+  ASSERT_GT(h_r, 0.0);
+  const double last_dt = 1.0;
+  // A particle moving at 0.2 relative to the flow, with no pair moving: the particle bound, max_displacement / 0.2.
+  EXPECT_DOUBLE_EQ(overdamped_time_step(ts, law, 0.01, 0.2, 1.0, last_dt, 0.0, 0.0), ts.max_displacement / 0.2);
+  // The former rule: the contact displacement (a tenth of the range) for every particle.
+  TimeStepParams former = ts;
+  former.bound = TimeStepParams::Bound::particles;
+  EXPECT_DOUBLE_EQ(overdamped_time_step(former, law, 0.01, 0.2, 1.0, last_dt, 0.0), 0.1 * h_r / 0.2);
+  // A pair rate above the particle bound decides.
+  EXPECT_DOUBLE_EQ(overdamped_time_step(ts, law, 0.01, 0.2, 1.0, last_dt, 0.0, 1000.0), 1e-3);
+  EXPECT_DOUBLE_EQ(contact_displacement(ts, law, 0.0), 0.1 * h_r);
+  EXPECT_DOUBLE_EQ(contact_displacement(ts, law, 1e-4), 4e-4);  // four compliance lengths
+}
