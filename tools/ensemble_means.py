@@ -9,8 +9,10 @@ decorrelate within a few strains (docs/validation.md section 3), so the scatter 
 agrees with the second; with few twins it can be small by chance. Made for issue 14's question whether the
 multi-rate FCM step shifts eta_r beyond run-to-run scatter (cases/validation/fcm_multirate_ensemble.yaml).
 
-usage: tools/ensemble_means.py CAMPAIGN.json [MORE.json ...] KEY
-  KEY  the dotted parameter that names the groups (hydrodynamics.fcm.far_field_every)
+usage: tools/ensemble_means.py CAMPAIGN.json [MORE.json ...] KEY [--where PARAMETER=VALUE ...]
+  KEY      the dotted parameter that names the groups (hydrodynamics.fcm.far_field_every)
+  --where  only the points whose parameter has this value (e.g. contact.mu_s=0.5 for one case of a campaign
+           that runs several)
 Points of a campaign that does not vary KEY (it set one value for all points) form a group named after the
 campaign's folder, so a second campaign can be set against the first one's groups: e.g.
   tools/ensemble_means.py results/multirate/campaign.json runs/predictor/campaign.json \
@@ -22,7 +24,8 @@ import math
 import os
 import sys
 
-QUANTITIES = (("eta_r", "eta_r"), ("Sigma_c12/Sigma_12", "Sigma^c_12/Sigma_12"), ("N2", "N2"))
+QUANTITIES = (("eta_r", "eta_r"), ("Sigma_c12/Sigma_12", "Sigma^c_12/Sigma_12"), ("N2", "N2"),
+              ("contacts_per_particle", "contacts per particle"))
 
 
 def mean_and_error(values):
@@ -32,14 +35,31 @@ def mean_and_error(values):
     return m, (math.sqrt(sum((x - m) ** 2 for x in values) / (n - 1) / n) if n > 1 else math.nan)
 
 
+def _same_number(value, text):
+    try:
+        return float(value) == float(text)
+    except (TypeError, ValueError):
+        return False
+
+
 def usage(message):
     sys.stderr.write(f"error: {message}\n" if message else "")
-    sys.stderr.write("usage: tools/ensemble_means.py CAMPAIGN.json [MORE.json ...] KEY\n")
+    sys.stderr.write("usage: tools/ensemble_means.py CAMPAIGN.json [MORE.json ...] KEY [--where PARAMETER=VALUE ...]\n")
     sys.exit(2)
 
 
 def main(argv):
     if len(argv) < 2 or argv[0] in ("-h", "--help"):
+        usage("")
+    where = {}
+    while "--where" in argv:
+        at = argv.index("--where")
+        if at + 1 >= len(argv) or "=" not in argv[at + 1]:
+            usage("--where needs PARAMETER=VALUE")
+        name, value = argv[at + 1].split("=", 1)
+        where[name] = value
+        del argv[at:at + 2]
+    if len(argv) < 2:
         usage("")
     paths, key = argv[:-1], argv[-1]
     groups = {}
@@ -53,7 +73,11 @@ def main(argv):
         for p in table["points"]:
             if p.get("status") != "done" or (varies and key not in p["parameters"]):
                 continue
-            d = p["derived"]
+            if any(str(p["parameters"].get(k)) != v and not _same_number(p["parameters"].get(k), v)
+                   for k, v in where.items()):
+                continue
+            d = dict(p["derived"])
+            d.setdefault("contacts_per_particle", p["summary"].get("contacts_per_particle", {"mean": math.nan, "sem": math.nan}))
             twin = tuple(sorted((k, str(v)) for k, v in p["parameters"].items() if k != key))  # e.g. the seed
             group = str(p["parameters"][key]) if varies else folder
             groups.setdefault(group, []).append(
@@ -72,7 +96,8 @@ def main(argv):
         print(f"{name:>10} {n:>3} " + " ".join(f"{stats[q][0]:>15.4g} +- {stats[q][1]:<7.2g}" for q, _ in QUANTITIES)
               + f"  {sum(r[2] for r in rows) / n:.3g}")
         for r in rows:
-            print(f"{'':>14} {r[0]}: eta_r {r[1]['eta_r']:.4g}, ratio {r[1]['Sigma_c12/Sigma_12']:.3f}, N2 {r[1]['N2']:.3g}")
+            print(f"{'':>14} {r[0]}: eta_r {r[1]['eta_r']:.4g}, ratio {r[1]['Sigma_c12/Sigma_12']:.3f}, N2 {r[1]['N2']:.3g}, "
+                  f"contacts per particle {r[1]['contacts_per_particle']:.3f}")
         if first is None:
             first, first_rows = stats, {r[3]: (r[1], r[4]) for r in rows}
         else:

@@ -4,6 +4,8 @@
 # must agree exactly; FCM runs differ run to run at ~1e-12 by themselves (FFTW_MEASURE plans), so a FCM case is
 # also run twice by the old binary to show that noise level.
 # usage: tools/refactor_check.sh OLD_SUSPEND NEW_SUSPEND OUT_DIR [STRAIN (default 0.05)] [CASE NAMES (default all)]
+# NEW_SETS="key=value ...": assignments for the new binary only, e.g. the former defaults of keys whose default
+# changed (NEW_SETS="run.time_step.bound=particles run.time_step.contacts=explicit"), so what remains is the refactor.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 old=$1 new=$2 out=$3 strain=${4:-0.05}
@@ -40,9 +42,13 @@ for entry in "${cases[@]}"; do
   runs=(old new)
   [[ $sets == *fcm* ]] && runs+=(old2)
   for r in "${runs[@]}"; do
-    bin=$old; [[ $r == new ]] && bin=$new
+    bin=$old; extra=()
+    if [[ $r == new ]]; then
+      bin=$new
+      for s in ${NEW_SETS:-}; do extra+=(--set "$s"); done
+    fi
     rm -rf "${out:?}/$name.$r"
-    "$bin" run "$file" "${args[@]}" --out "$out/$name.$r" --quiet > "$out/$name.$r.log" 2>&1 || { echo "$name: $r run failed (see $out/$name.$r.log)"; status=1; }
+    "$bin" run "$file" "${args[@]}" "${extra[@]}" --out "$out/$name.$r" --quiet > "$out/$name.$r.log" 2>&1 || { echo "$name: $r run failed (see $out/$name.$r.log)"; status=1; }
   done
   printf "%-22s new vs old: " "$name"
   /usr/bin/python3 "$root/tools/compare_runs.py" "$out/$name.old" "$out/$name.new" | head -4 || status=1
