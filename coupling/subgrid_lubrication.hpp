@@ -9,7 +9,7 @@
 //  * Taper (continuity at the cutoff): w = 1 for s' <= s0, w = 1 - t^2 (3 - 2 t), t = (s' - s0)/(s1 - s0), on
 //    (s0, s1), w = 0 beyond s1 = `cutoff`. FCM alone is within ~1.5% of the exact X11A at s' = 3 and within 0.75%
 //    of every mobility function for s' >= 3 (docs/fcm.md), so the correction is needed only inside s' ~ 3-3.5
-//    (/work/shared/reference/README.md). s0 = taper_start for equal spheres (exact functions tabulated);
+//    (docs/references.md). s0 = taper_start for equal spheres (exact functions tabulated);
 //    model_taper_start for unequal ones (the singular model alone drifts from the exact functions beyond xi ~ 0.1).
 //  * Forces and torques ON the particles (12-vectors (F_i, T_i, F_j, T_j)):
 //        F = -Delta_R (V - V_inf) + gammadot Delta_R_FE : E_hat,   E_hat = (e_x e_y + e_y e_x)/2

@@ -3,7 +3,7 @@
 // find_resistance_scalars/scalars_general_resistance.txt, commit 6b9117d): corrected Jeffrey & Onishi (1984) /
 // Jeffrey (1992) near-contact forms for s' <= 2.02 (Townsend 2023, Phys. Fluids 35, 127126), Lamb's method
 // (Wilson 2013, J. Comput. Phys. 245, 302) beyond. Same data as tests/data/two_sphere_resistance_table.txt
-// (/work/shared/reference/README.md), Kim & Karrila section 11.3 normalisation.
+// (docs/references.md), Kim & Karrila section 11.3 normalisation.
 // Columns: s', then XA YA YB XC YC XG YG YH of the "11" functions, then the same of the "12" functions.
 #pragma once
 #include <array>

@@ -3,7 +3,7 @@
 // Source: A. K. Townsend, Stokesian dynamics code (GitHub Pecnut/stokesian-dynamics, commit 6b9117d, its own
 // generator unchanged): corrected Jeffrey & Onishi (1984) / Jeffrey (1992) near-contact forms for s' <= 2.02, Lamb's
 // method (Wilson 2013, tolerance 1e-8) for s' >= 2.025. Same data as tests/data/two_sphere_resistance_table_lambda1.4.txt
-// (/work/shared/reference/README.md: how it was made and checked), Kim & Karrila section 11.3 normalisation.
+// (docs/references.md: how it was made and checked), Kim & Karrila section 11.3 normalisation.
 // Columns: s', then XA YA YB XC YC XG YG YH of the "11" functions, then the same of the "12" functions.
 // The rows for 1/1.4 are the same pair seen from the large sphere, in its units: the "22" and "21" functions.
 #pragma once

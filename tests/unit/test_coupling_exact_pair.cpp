@@ -1,6 +1,6 @@
 // The exact near-contact functions of the sub-grid correction against outside values: the tabulated exact
 // functions (tests/data/two_sphere_resistance_table.txt, Townsend / Jeffrey & Onishi) at gaps between and on the
-// table's nodes, and below the table the near-contact asymptotes of /work/shared/reference/README.md
+// table's nodes, and below the table the near-contact asymptotes of docs/references.md
 // (X11A = 1/(4 xi) + (9/40) ln(1/xi) + 0.99542, Y11A = (1/6) ln(1/xi) + 0.99832, Y11B = -(1/4) ln(1/xi) + 0.23892,
 // Y11C = (1/5) ln(1/xi) + 0.70283, X11G = 3/(8 xi) + (27/80) ln(1/xi) - 0.46921, Y11G = (1/8) ln(1/xi) - 0.14116,
 // Y11H = (1/40) ln(1/xi) - 0.07401).

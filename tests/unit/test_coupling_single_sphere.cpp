@@ -1,5 +1,5 @@
 // The coupled solve (coupled_mobility.hpp) for one sphere against exact values: with a force, the drag of the
-// periodic Gaussian sphere 6 pi a U / F = 1 - 2.837297 (a/L) + 4 (a/L)^3 (/work/shared/reference/README.md; Hasimoto
+// periodic Gaussian sphere 6 pi a U / F = 1 - 2.837297 (a/L) + 4 (a/L)^3 (docs/references.md; Hasimoto
 // 1959 at leading order); with a torque, Omega = T / (8 pi a^3) (1 - phi) (docs/fcm.md: the zero-mean flow lacks
 // the k -> 0 vorticity); in shear, a force-free sphere moves with the flow, spins at -gammadot/2 and carries the
 // Einstein stresslet (20/3) pi a^3 E (1 - 0.83 phi) in a cube (docs/fcm.md).

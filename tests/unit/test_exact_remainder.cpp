@@ -1,7 +1,7 @@
 // The exact two-sphere functions of the unequal pair lambda = a2/a1 = 1.4 (paper 004's bidisperse suspension),
 // as the code builds them (Stokes drag + singular terms + the tabulated remainder of dem/hydro/exact_remainder.hpp),
 // against the outside values of tests/data/two_sphere_resistance_table_lambda1.4.txt (Townsend's Stokesian-dynamics
-// generator: corrected Jeffrey & Onishi near contact, Lamb's method beyond; /work/shared/reference/README.md):
+// generator: corrected Jeffrey & Onishi near contact, Lamb's method beyond; docs/references.md):
 //  * on the table's nodes, both orderings (lambda = 1.4 seen from the small sphere, 1/1.4 from the large one);
 //  * between nodes: each node left out of the table in turn and the interpolant at its gap compared with it: the
 //    interpolation error at twice the shipped spacing, within 2% for xi = 1e-4 ... 0.1 (worst: the small functions

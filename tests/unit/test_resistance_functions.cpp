@@ -1,5 +1,5 @@
 // Two-sphere resistance functions of the model against the exact values of Jeffrey & Onishi (1984) / Jeffrey (1992)
-// as tabulated by Townsend (tests/data/two_sphere_resistance_table.txt, see /work/shared/reference/README.md).
+// as tabulated by Townsend (tests/data/two_sphere_resistance_table.txt, see docs/references.md).
 #include <gtest/gtest.h>
 
 #include <array>
