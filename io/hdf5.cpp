@@ -112,8 +112,18 @@ File File::create(const std::string& path) {
   install_error_handling();
   File f;
   f.path_ = path;
-  f.h_ = Handle(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "cannot create " + path),
-                H5Fclose);
+  errno = 0;
+  const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (id < 0) {
+    // No room for the file's first block (disk full, quota, file size limit) is an output failure like a failed
+    // write; anything else (a missing or read-only folder) is not.
+    const int e = errno;
+    const std::string reason = e ? std::string(" (") + std::strerror(e) + ")" : std::string();
+    if (e == ENOSPC || e == EDQUOT || e == EFBIG || e == EIO)
+      throw OutputError("cannot write " + path + ", the file could not be created" + reason);
+    throw std::runtime_error("HDF5: cannot create " + path + reason);
+  }
+  f.h_ = Handle(id, H5Fclose);
   return f;
 }
 

@@ -1,6 +1,9 @@
 // run.h5 round trip, truncation on restart, checkpoint round trip and refusal, and the XDMF references.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <filesystem>
 #include <fstream>
@@ -130,6 +133,39 @@ TEST(Checkpoint, RoundTripIsBitExact) {
     EXPECT_EQ(d.state.particles.velocity[i], c.state.particles.velocity[i]);
     EXPECT_EQ(d.state.particles.species[i], c.state.particles.species[i]);
   }
+}
+
+// A file that cannot even be created for lack of room (here a file size limit of zero, as a full disk) is an output
+// failure, like a failed write: the run stops with the output exit code and keeps its last checkpoint, and the
+// temporary file is removed.
+TEST(Checkpoint, NoRoomToCreateTheFileIsAnOutputFailure) {
+  const std::string path = temp("no_room.h5");
+  Checkpoint c;
+  c.state.particles = some_particles(5);
+  c.fingerprint = "physics";
+  c.rng = serialize(Rng(1));
+  rlimit old{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old), 0);
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit none = old;
+  none.rlim_cur = 0;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &none), 0);
+  std::string message;
+  bool output_error = false;
+  try {
+    write_checkpoint(path, c);
+  } catch (const OutputError& e) {
+    output_error = true;
+    message = e.what();
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_TRUE(output_error) << message;
+  EXPECT_NE(message.find("cannot write "), std::string::npos) << message;
+  EXPECT_FALSE(std::filesystem::exists(path));
+  EXPECT_FALSE(std::filesystem::exists(path + ".tmp." + std::to_string(getpid())));
 }
 
 TEST(Checkpoint, RefusesOtherCaseCorruptFileAndNaN) {
