@@ -4,7 +4,10 @@
 //   singular        the pairwise model's default: drag + the terms singular at contact;
 //   exact_relative  the pairwise option of that name (dem/hydro/exact_relative.hpp): exact for relative motion and
 //                   rotation, rigid translation of the pair force-free, so X11A + X12A = 1 and Y11A + Y12A = 1;
-//   exact           the exact two-sphere functions (what FCM + sub-grid correction reproduces).
+//   exact           the exact two-sphere functions (what FCM + sub-grid correction reproduces), the stresslet
+//                   functions M (X, Y, Z) included.
+// The M functions of singular and exact_relative are the model's: drag + singular terms (X11M, X12M, Y11M, Y12M),
+// Z11M = 1 and Z12M = 0.
 // The last two need an exact table for a2/a1 (1, 1.4, 1/1.4; dem/hydro/exact_remainder.hpp).
 #include <CLI/CLI.hpp>
 #include <array>
@@ -72,7 +75,7 @@ hydro::ResistanceScalars pair_functions(const PairOptions& o) {
   if (o.functions == "singular" || (o.outer_cutoff >= 0.0 && o.gap > o.outer_cutoff)) return s;
   const double xi = 2.0 * o.gap / (o.a1 + o.a2) + o.regularization, log_inv_xi = std::log(1.0 / xi);
   // Seen from sphere 1 (lambda) and from sphere 2 (1/lambda, in a2 units).
-  hydro::ResistanceScalars exact_1 = hydro::ExactRemainder::for_ratio(o.a2 / o.a1)->exact(xi, log_inv_xi);
+  hydro::ResistanceScalars exact_1 = hydro::ExactRemainder::for_ratio(o.a2 / o.a1)->exact_with_stresslet(xi, log_inv_xi);
   const hydro::ResistanceScalars exact_2 = hydro::ExactRemainder::for_ratio(o.a1 / o.a2)->exact(xi, log_inv_xi);
   if (o.functions == "exact") {
     exact_1.xi = s.xi;
@@ -90,7 +93,7 @@ hydro::ResistanceScalars pair_functions(const PairOptions& o) {
 void run_pair(const PairOptions& o) {
   check(o);
   const hydro::ResistanceScalars s = pair_functions(o);
-  const std::array<std::pair<const char*, double>, 17> values = {{{"xi", s.xi},
+  const std::array<std::pair<const char*, double>, 23> values = {{{"xi", s.xi},
                                                                    {"X11A", s.x11a},
                                                                    {"X12A", s.x12a},
                                                                    {"Y11A", s.y11a},
@@ -106,7 +109,13 @@ void run_pair(const PairOptions& o) {
                                                                    {"Y11G", s.y11g},
                                                                    {"Y12G", s.y12g},
                                                                    {"Y11H", s.y11h},
-                                                                   {"Y12H", s.y12h}}};
+                                                                   {"Y12H", s.y12h},
+                                                                   {"X11M", s.x11m},
+                                                                   {"X12M", s.x12m},
+                                                                   {"Y11M", s.y11m},
+                                                                   {"Y12M", s.y12m},
+                                                                   {"Z11M", s.z11m},
+                                                                   {"Z12M", s.z12m}}};
   if (o.json) {
     std::printf("{");
     for (std::size_t k = 0; k < values.size(); ++k)
@@ -115,7 +124,7 @@ void run_pair(const PairOptions& o) {
     return;
   }
   std::printf("# %s functions; a1 = %g, a2 = %g, lambda = a2/a1 = %g, gap = %g; A x 6 pi eta a1, B, G x 4 pi eta "
-              "a1^2, C, H x 8 pi eta a1^3\n",
+              "a1^2, C, H x 8 pi eta a1^3, M x (20/3) pi eta a1^3\n",
               o.functions.c_str(), o.a1, o.a2, o.a2 / o.a1, o.gap);
   for (const auto& [name, value] : values) std::printf("%-5s %.10g\n", name, value);
 }

@@ -1,7 +1,7 @@
 // The exact two-sphere resistance tables of tests/data (Townsend / Jeffrey & Onishi; Kim & Karrila normalisation)
 // read for the tests: two_sphere_resistance_table.txt (lambda = 0.01 ... 100) and
 // two_sphere_resistance_table_lambda1.4.txt (lambda = 1.4 and 1/1.4). Each row: s', lambda, gamma (0: "11", 1: "12"),
-// XA YA YB XC YC XG YG YH ...
+// XA YA YB XC YC XG YG YH XM YM ZM.
 #pragma once
 #include <array>
 #include <cmath>
@@ -12,8 +12,9 @@
 
 namespace suspend::test {
 
-// s' -> {"11" functions, "12" functions}, each XA YA YB XC YC XG YG YH, for the rows of `lambda` (to 1e-6).
-using TwoSphereTable = std::map<double, std::array<std::array<double, 8>, 2>>;
+// s' -> {"11" functions, "12" functions}, each XA YA YB XC YC XG YG YH XM YM ZM, for the rows of `lambda` (to 1e-6).
+using TwoSphereRow = std::array<std::array<double, 11>, 2>;
+using TwoSphereTable = std::map<double, TwoSphereRow>;
 
 inline TwoSphereTable read_two_sphere_table(const std::string& file, double lambda) {
   std::ifstream in(std::string(SUSPEND_SOURCE_DIR "/tests/data/") + file);
@@ -22,7 +23,7 @@ inline TwoSphereTable read_two_sphere_table(const std::string& file, double lamb
   while (std::getline(in, line)) {
     std::istringstream s(line);
     double sp, lam, gam;
-    std::array<double, 8> v{};
+    std::array<double, 11> v{};
     if (!(s >> sp >> lam >> gam)) continue;
     bool ok = true;
     for (double& x : v) ok = ok && static_cast<bool>(s >> x);

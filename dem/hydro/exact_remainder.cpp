@@ -10,11 +10,13 @@ namespace suspend::hydro {
 
 ExactRemainder::ExactRemainder(double lambda, std::span<const Row> rows)
     : lambda_(lambda), coefficients_(LubricationCoefficients::for_ratio(lambda)) {
-  constexpr std::array<double ResistanceScalars::*, 16> column{
+  constexpr std::array<double ResistanceScalars::*, 22> column{
       &ResistanceScalars::x11a, &ResistanceScalars::y11a, &ResistanceScalars::y11b, &ResistanceScalars::x11c,
       &ResistanceScalars::y11c, &ResistanceScalars::x11g, &ResistanceScalars::y11g, &ResistanceScalars::y11h,
       &ResistanceScalars::x12a, &ResistanceScalars::y12a, &ResistanceScalars::y12b, &ResistanceScalars::x12c,
-      &ResistanceScalars::y12c, &ResistanceScalars::x12g, &ResistanceScalars::y12g, &ResistanceScalars::y12h};
+      &ResistanceScalars::y12c, &ResistanceScalars::x12g, &ResistanceScalars::y12g, &ResistanceScalars::y12h,
+      &ResistanceScalars::x11m, &ResistanceScalars::y11m, &ResistanceScalars::z11m, &ResistanceScalars::x12m,
+      &ResistanceScalars::y12m, &ResistanceScalars::z12m};
   for (const Row& row : rows) {
     const double xi = row[0] - 2.0;
     ResistanceScalars model = lubrication_scalars(coefficients_, xi, std::log(1.0 / xi));
@@ -38,13 +40,17 @@ const ExactRemainder* ExactRemainder::for_ratio(double lambda) {
 
 std::string ExactRemainder::shipped_ratios() { return "1, 1.4 and 1/1.4"; }
 
-ResistanceScalars ExactRemainder::at(double xi) const {
+double ExactRemainder::interpolation(double xi, std::size_t& k0, std::size_t& k1) const {
   const auto it = std::upper_bound(xi_.begin(), xi_.end(), xi);
-  std::size_t k1 = static_cast<std::size_t>(it - xi_.begin());
-  std::size_t k0 = k1 == 0 ? 0 : k1 - 1;
+  k1 = static_cast<std::size_t>(it - xi_.begin());
+  k0 = k1 == 0 ? 0 : k1 - 1;
   if (k1 >= xi_.size()) k1 = k0 = xi_.size() - 1;
-  double w = 0.0;
-  if (k1 != k0) w = (xi - xi_[k0]) / (xi_[k1] - xi_[k0]);
+  return k1 != k0 ? (xi - xi_[k0]) / (xi_[k1] - xi_[k0]) : 0.0;
+}
+
+ResistanceScalars ExactRemainder::at(double xi) const {
+  std::size_t k0 = 0, k1 = 0;
+  const double w = interpolation(xi, k0, k1);
   ResistanceScalars r{};
   for (auto f : tabulated_functions) r.*f = (1.0 - w) * remainder_[k0].*f + w * remainder_[k1].*f;
   return r;
@@ -54,6 +60,14 @@ ResistanceScalars ExactRemainder::exact(double xi, double log_inv_xi) const {
   ResistanceScalars s = lubrication_scalars(coefficients_, xi, log_inv_xi);
   add_stokes_drag(s);
   add_to(xi, s);
+  return s;
+}
+
+ResistanceScalars ExactRemainder::exact_with_stresslet(double xi, double log_inv_xi) const {
+  ResistanceScalars s = exact(xi, log_inv_xi);
+  std::size_t k0 = 0, k1 = 0;
+  const double w = interpolation(xi, k0, k1);
+  for (auto f : tabulated_stresslet_functions) s.*f += (1.0 - w) * remainder_[k0].*f + w * remainder_[k1].*f;
   return s;
 }
 

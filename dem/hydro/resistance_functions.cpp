@@ -74,6 +74,7 @@ void add_stokes_drag(ResistanceScalars& s) {
   s.y11c += 1.0;
   s.x11m += 1.0;
   s.y11m += 1.0;
+  s.z11m += 1.0;
 }
 
 ResistanceScalars two_sphere_resistance(double a1, double a2, double gap, const TwoSphereOptions& options) {

@@ -18,6 +18,7 @@
 //   X11G = g1xg/xi + g2xg L                    X12G = -(g1xg/xi + g2xg L)
 //   Y11G = g2yg L          Y12G = -g2yg L      Y11H = g2yh L      Y12H = g5yh L
 //   X11M = 1 + g1xm/xi     X12M = g4xm/xi      Y11M = 1 + g2ym L  Y12M = g5ym L       (L = ln(1/xi))
+//   Z11M = 1               Z12M = 0
 // The O(1) remainders (exact minus model) are tabulated in docs/lubrication.md. Paper 000 eq. A.7 lists the same g's
 // divided by 6 pi eta (e.g. its g^{Y^B_ii} = (2/3) a_i^2 g2yb).
 // Validity: xi > 0 and xi << 1. Units: dimensionless.
@@ -49,6 +50,7 @@ struct ResistanceScalars {
   double x11g = 0, x12g = 0, y11g = 0, y12g = 0;
   double y11h = 0, y12h = 0;
   double x11m = 0, x12m = 0, y11m = 0, y12m = 0;
+  double z11m = 0, z12m = 0;  // not singular at contact: drag only in the model (Z11M = 1, Z12M = 0)
 };
 
 // Lubrication part only (no Stokes drag): the singular terms at scaled gap xi > 0. No allocation, no branches.
@@ -56,7 +58,7 @@ ResistanceScalars lubrication_scalars(const LubricationCoefficients& c, double x
 // Same, with ln(1/xi) supplied by the caller (one logarithm per pair for both spheres).
 ResistanceScalars lubrication_scalars(const LubricationCoefficients& c, double xi, double log_inv_xi);
 
-// Isolated-sphere drag added to the "11" functions of A, C and M (X11A = Y11A = X11C = Y11C = X11M = Y11M = 1).
+// Isolated-sphere drag added to the "11" functions of A, C and M (X11A = Y11A = X11C = Y11C = X11M = Y11M = Z11M = 1).
 void add_stokes_drag(ResistanceScalars& s);
 
 // Full model functions (Stokes + lubrication) of spheres a1, a2 at surface gap h (lengths in any common unit).

@@ -39,7 +39,7 @@ double value(const std::string& json, const std::string& key) {
   return std::stod(json.substr(at + key.size() + 4));
 }
 
-std::map<double, std::array<std::array<double, 8>, 2>> unequal_table(double lambda) {
+suspend::test::TwoSphereTable unequal_table(double lambda) {
   return suspend::test::lambda_1_4_table(lambda);
 }
 
@@ -72,6 +72,57 @@ TEST(PairCommand, ExactFunctionsOfTheUnequalPairMatchTheTable) {
   EXPECT_EQ(checked, 22);  // 11 gaps, both orderings
 }
 
+// The stresslet functions M of the exact pair (paper 004's FCM target; issue: one particle stress): equal spheres at
+// s' = 2.01 and 2.1 against the table (X11M 16.3443039, Y11M 1.43834163, Z11M 1.02164312 at s' = 2.01), and the
+// lambda = 1.4 pair from both spheres on the table's gaps xi = 1e-4 ... 0.1.
+TEST(PairCommand, ExactStressletFunctionsMatchTheTable) {
+  constexpr std::array<const char*, 3> self_m{"X11M", "Y11M", "Z11M"};
+  constexpr std::array<const char*, 3> pair_m{"X12M", "Y12M", "Z12M"};
+  const auto equal = suspend::test::read_two_sphere_table("two_sphere_resistance_table.txt", 1.0);
+  for (double sp : {2.01, 2.1}) {
+    const Result r = run("--a1 1 --a2 1 --gap " + gap_arg(1.0, 1.0, sp) + " --functions exact --json");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const auto& rows = equal.at(sp);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(value(r.out, self_m[k]), rows[0][8 + k], 5e-3 * std::abs(rows[0][8 + k])) << sp << self_m[k];
+      EXPECT_NEAR(value(r.out, pair_m[k]), rows[1][8 + k], 5e-3 * std::abs(rows[1][8 + k])) << sp << pair_m[k];
+    }
+  }
+  const Result at_001 = run("--a1 1 --a2 1 --gap 0.01 --functions exact --json");
+  EXPECT_NEAR(value(at_001.out, "X11M"), 16.3443039, 5e-3 * 16.3443039);
+  EXPECT_NEAR(value(at_001.out, "Y11M"), 1.43834163, 5e-3 * 1.43834163);
+  EXPECT_NEAR(value(at_001.out, "Z11M"), 1.02164312, 5e-3 * 1.02164312);
+  int checked = 0;
+  for (const auto& [a1, a2] : {std::pair{1.0, 1.4}, std::pair{1.4, 1.0}}) {
+    for (const auto& [sp, rows] : unequal_table(a2 / a1)) {
+      if (sp - 2.0 < 1e-4 * (1 - 1e-9) || sp - 2.0 > 0.1 * (1 + 1e-9)) continue;
+      const Result r = run("--a1 " + std::to_string(a1) + " --a2 " + std::to_string(a2) + " --gap " +
+                           gap_arg(a1, a2, sp) + " --functions exact --json");
+      ASSERT_EQ(r.exit_code, 0) << r.out;
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(value(r.out, self_m[k]), rows[0][8 + k], 5e-3 * std::abs(rows[0][8 + k])) << sp << self_m[k];
+        EXPECT_NEAR(value(r.out, pair_m[k]), rows[1][8 + k], 5e-3 * std::abs(rows[1][8 + k])) << sp << pair_m[k];
+      }
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 22);
+}
+
+// The model's M functions (singular and exact_relative) are drag + the singular terms; Z has none (Z11M = 1, Z12M =
+// 0), and near contact the singular X11M, X12M approach the exact ones: at xi = 1e-4 within 0.1%.
+TEST(PairCommand, ModelStressletFunctionsApproachTheExactOnesAtContact) {
+  for (const char* functions : {"singular", "exact_relative"}) {
+    const Result r = run(std::string("--a1 1 --a2 1 --gap 1e-4 --json --functions ") + functions);
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_EQ(value(r.out, "Z11M"), 1.0) << functions;
+    EXPECT_EQ(value(r.out, "Z12M"), 0.0) << functions;
+    const Result e = run("--a1 1 --a2 1 --gap 1e-4 --json --functions exact");
+    for (const char* key : {"X11M", "X12M"})
+      EXPECT_NEAR(value(r.out, key) / value(e.out, key), 1.0, 1e-3) << functions << " " << key;
+  }
+}
+
 TEST(PairCommand, ExactRelativeFunctionsOfTheUnequalPair) {
   const double a1 = 1.0, a2 = 1.4;
   const auto t1 = unequal_table(a2 / a1), t2 = unequal_table(a1 / a2);
@@ -101,7 +152,10 @@ TEST(PairCommand, JsonHoldsEveryFunctionOfTheModel) {
   EXPECT_NEAR(value(r.out, "X11A"), s.x11a, 1e-9 * s.x11a);
   EXPECT_NEAR(value(r.out, "Y12B"), s.y12b, 1e-9 * s.y12b);
   EXPECT_NEAR(value(r.out, "Y12H"), s.y12h, 1e-9 * s.y12h);
-  for (const char* key : {"X12A", "Y11A", "Y12A", "Y11B", "X11C", "Y11C", "Y12C", "X11G", "X12G", "Y11G", "Y12G", "Y11H"})
+  EXPECT_NEAR(value(r.out, "X11M"), s.x11m, 1e-9 * s.x11m);
+  EXPECT_NEAR(value(r.out, "Y12M"), s.y12m, 1e-9 * std::abs(s.y12m));
+  for (const char* key : {"X12A", "Y11A", "Y12A", "Y11B", "X11C", "Y11C", "Y12C", "X11G", "X12G", "Y11G", "Y12G", "Y11H",
+                          "X12M", "Y11M", "Z11M", "Z12M"})
     EXPECT_NE(value(r.out, key), -1e300) << key;
 }
 

@@ -36,7 +36,7 @@ LubricationParams exact_params() {
 }
 
 // Exact table at lambda = 1: s' -> {"11" row, "12" row}, columns XA YA YB XC YC XG YG YH.
-std::map<double, std::array<std::array<double, 8>, 2>> exact_table() {
+suspend::test::TwoSphereTable exact_table() {
   return suspend::test::read_two_sphere_table("two_sphere_resistance_table.txt", 1.0);
 }
 
@@ -95,11 +95,11 @@ namespace {
 constexpr double pi = std::numbers::pi;
 
 // The lambda = 1.4 file's "11" and "12" rows (XA YA YB XC YC XG YG YH) at s' for the given lambda.
-std::array<std::array<double, 8>, 2> unequal_row(double lambda, double sp) {
+suspend::test::TwoSphereRow unequal_row(double lambda, double sp) {
   const auto table = suspend::test::lambda_1_4_table(lambda);
   const auto it = table.find(sp);
   EXPECT_TRUE(it != table.end()) << lambda << " " << sp;
-  return it == table.end() ? std::array<std::array<double, 8>, 2>{} : it->second;
+  return it == table.end() ? suspend::test::TwoSphereRow{} : it->second;
 }
 
 struct ExactPair {
@@ -120,7 +120,7 @@ ExactPair exact_pair(double a_i, double a_j, double sp, const Vec3& n, const Mat
   };
   const double a[2] = {a_i, a_j};
   const Vec3 d[2] = {n, -n};
-  const std::array<std::array<double, 8>, 2>* t[2] = {&ti, &tj};
+  const suspend::test::TwoSphereRow* t[2] = {&ti, &tj};
   ExactPair out;
   for (int al = 0; al < 2; ++al)
     for (int be = 0; be < 2; ++be) {
