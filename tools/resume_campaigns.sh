@@ -29,6 +29,7 @@ campaigns=(
   "step_frictionless|$root/cases/validation/step_control_ensemble_frictionless.yaml|$root/results/step_control/frictionless_after/campaign.json"
   "step_ensemble|$root/cases/validation/step_control_ensemble.yaml|$root/results/step_control/adhesive_after/campaign.json"
   "step_particles|$root/cases/validation/step_control_ensemble_particles.yaml|$root/results/step_control/adhesive_particles/campaign.json"
+  "step_frictionless_diagnostic|$root/cases/validation/step_control_ensemble_frictionless_diagnostic.yaml|$root/results/step_control/frictionless_diagnostic/campaign.json"
 )
 queue=()
 for entry in "${campaigns[@]}"; do
