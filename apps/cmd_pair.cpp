@@ -18,11 +18,13 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "apps/commands.hpp"
 #include "core/error.hpp"
 #include "dem/hydro/exact_relative.hpp"
 #include "dem/hydro/exact_remainder.hpp"
+#include "dem/hydro/free_pair.hpp"
 #include "dem/hydro/resistance_functions.hpp"
 
 namespace suspend::app {
@@ -36,6 +38,8 @@ struct PairOptions {
   double regularization = 0.0;
   double outer_cutoff = -1.0;  // none
   std::string functions = "singular";
+  bool shear = false;                            // the free pair's stress in simple shear
+  std::vector<double> normal{1.0, -1.0, 0.0};    // pair axis for --shear (the compressional axis by default)
 };
 
 std::string str(double v) {
@@ -59,7 +63,14 @@ void check(const PairOptions& o) {
   require(o.gap <= 1e6 * std::min(o.a1, o.a2), "--gap = " + str(o.gap) + ": at most 1e6 radii");
   require(o.outer_cutoff == -1.0 || (std::isfinite(o.outer_cutoff) && o.outer_cutoff > 0.0),
           "--outer-cutoff = " + str(o.outer_cutoff) + ": the surface gap beyond which lubrication is zero must be > 0");
-  if (o.functions == "singular") return;
+  if (o.shear) {
+    const double norm = std::sqrt(o.normal[0] * o.normal[0] + o.normal[1] * o.normal[1] + o.normal[2] * o.normal[2]);
+    require(std::isfinite(norm) && norm > 0.0, "--normal: the pair axis must be a non-zero finite vector");
+    require(hydro::ExactRemainder::for_ratio(o.a2 / o.a1) != nullptr,
+            "--shear: the exact stress needs an exact two-sphere table; a2/a1 = " + str(o.a2 / o.a1) +
+                " has none (shipped for " + hydro::ExactRemainder::shipped_ratios() + ")");
+  }
+  if (o.functions == "singular" && !o.shear) return;
   require(hydro::ExactRemainder::for_ratio(o.a2 / o.a1) != nullptr,
           "--functions " + o.functions + ": no exact two-sphere table for a2/a1 = " + str(o.a2 / o.a1) +
               " (shipped for " + hydro::ExactRemainder::shipped_ratios() + "); use --functions singular");
@@ -90,8 +101,46 @@ hydro::ResistanceScalars pair_functions(const PairOptions& o) {
   return lub_1;
 }
 
+// The stress of a force- and torque-free pair in simple shear u = (y, 0, 0) (rate 1): exact (the tables), and the
+// model of --functions in the engine's two forms (dem/hydro/free_pair.hpp); interaction parts, eta gammadot a^3.
+void run_shear(const PairOptions& o) {
+  PairOptions swapped = o;
+  std::swap(swapped.a1, swapped.a2);
+  const hydro::ResistanceScalars m1 = pair_functions(o), m2 = pair_functions(swapped);
+  const double xi = 2.0 * o.gap / (o.a1 + o.a2) + o.regularization, log_inv_xi = std::log(1.0 / xi);
+  const hydro::ResistanceScalars e1 = hydro::ExactRemainder::for_ratio(o.a2 / o.a1)->exact_with_stresslet(xi, log_inv_xi);
+  const hydro::ResistanceScalars e2 = hydro::ExactRemainder::for_ratio(o.a1 / o.a2)->exact_with_stresslet(xi, log_inv_xi);
+  const Vec3 n = Vec3(o.normal[0], o.normal[1], o.normal[2]).normalized();
+  Mat3 e = Mat3::Zero();
+  e(0, 1) = e(1, 0) = 0.5;
+  const hydro::FreePairStress exact = hydro::free_pair_stress(o.a1, o.a2, n, o.gap, e1, e2, e);
+  const hydro::FreePairStress model = hydro::free_pair_stress(o.a1, o.a2, n, o.gap, m1, m2, e);
+  const std::array<std::pair<const char*, const Mat3*>, 3> forms{
+      {{"exact", &exact.stresslet}, {"stresslet", &model.stresslet}, {"force_dipole", &model.force_dipole}}};
+  if (o.json) {
+    std::printf("{\"gap\": %.12g, \"normal\": [%.12g, %.12g, %.12g], \"functions\": \"%s\"", o.gap, n.x(), n.y(),
+                n.z(), o.functions.c_str());
+    for (const auto& [name, m] : forms)
+      std::printf(", \"%s\": {\"xy\": %.12g, \"xx_minus_yy\": %.12g, \"yy_minus_zz\": %.12g, \"trace\": %.12g}",
+                  name, (*m)(0, 1), (*m)(0, 0) - (*m)(1, 1), (*m)(1, 1) - (*m)(2, 2), m->trace());
+    std::printf("}\n");
+    return;
+  }
+  std::printf("# free pair in simple shear u = (y, 0, 0), a1 = %g, a2 = %g, gap = %g, axis (%.4g, %.4g, %.4g); pair "
+              "stress minus the isolated spheres', eta gammadot a^3; model: %s functions\n",
+              o.a1, o.a2, o.gap, n.x(), n.y(), n.z(), o.functions.c_str());
+  std::printf("%-13s %14s %14s %14s %14s\n", "form", "xy", "xx - yy", "yy - zz", "trace");
+  for (const auto& [name, m] : forms)
+    std::printf("%-13s %14.8g %14.8g %14.8g %14.8g\n", name, (*m)(0, 1), (*m)(0, 0) - (*m)(1, 1),
+                (*m)(1, 1) - (*m)(2, 2), m->trace());
+}
+
 void run_pair(const PairOptions& o) {
   check(o);
+  if (o.shear) {
+    run_shear(o);
+    return;
+  }
   const hydro::ResistanceScalars s = pair_functions(o);
   const std::array<std::pair<const char*, double>, 23> values = {{{"xi", s.xi},
                                                                    {"X11A", s.x11a},
@@ -144,6 +193,11 @@ void add_pair_command(CLI::App& app) {
                   "singular (default: drag + singular terms), exact_relative (the pairwise option: exact relative "
                   "motion, rigid translation force-free) or exact (the exact two-sphere functions)")
       ->check(CLI::IsMember({"singular", "exact_relative", "exact"}));
+  sub->add_flag("--shear", opts->shear,
+                "print the stress of the force- and torque-free pair in simple shear u = (y, 0, 0): exact, and the "
+                "model of --functions as the stresslet and as the force dipole (lubrication.stress)");
+  sub->add_option("--normal", opts->normal, "pair axis for --shear, from sphere 1 to 2 (default 1 -1 0)")
+      ->expected(3);
   sub->callback([opts]() { run_pair(*opts); });
 }
 

@@ -28,8 +28,10 @@ LubricationCoefficients LubricationCoefficients::for_ratio(double lambda) {
   c.g2yg = 0.1 * (4.0 * l - l2 + 7.0 * l3) / p3;           // Jeffrey (27b)
   c.g2yh = 0.1 * (2.0 * l - l2) / p2;                      // Jeffrey (35b)
   c.g5yh = 0.05 * (l2 + 7.0 * l3) / p2;
-  c.g1xm = 1.2 * l2 / p3;                                  // Jeffrey (1992), M functions
+  c.g1xm = 1.2 * l2 / p3;                                  // Jeffrey (48b), M functions
+  c.g2xm = 3.0 / 25.0 * (l + 17.0 * l2 - 9.0 * l3) / p3;
   c.g4xm = 1.2 * l3 / p3;
+  c.g5xm = 3.0 / 25.0 * (-4.0 * l2 + 17.0 * l3 - 4.0 * l2 * l2) / p3;
   c.g2ym = 6.0 / 25.0 * l * (1.0 - l + 4.0 * l2) / p3;
   c.g5ym = 3.0 / 50.0 * l2 * (7.0 - 10.0 * l + 7.0 * l2) / p3;
   return c;
@@ -60,8 +62,8 @@ ResistanceScalars lubrication_scalars(const LubricationCoefficients& c, double x
   s.y12g = -s.y11g;
   s.y11h = c.g2yh * L;
   s.y12h = c.g5yh * L;
-  s.x11m = c.g1xm * inv;
-  s.x12m = c.g4xm * inv;
+  s.x11m = c.g1xm * inv + c.g2xm * L;
+  s.x12m = c.g4xm * inv + c.g5xm * L;
   s.y11m = c.g2ym * L;
   s.y12m = c.g5ym * L;
   return s;

@@ -17,7 +17,8 @@
 //   X11C = 1               X12C = 0            Y11C = 1 + g2yc L  Y12C = g4yc L
 //   X11G = g1xg/xi + g2xg L                    X12G = -(g1xg/xi + g2xg L)
 //   Y11G = g2yg L          Y12G = -g2yg L      Y11H = g2yh L      Y12H = g5yh L
-//   X11M = 1 + g1xm/xi     X12M = g4xm/xi      Y11M = 1 + g2ym L  Y12M = g5ym L       (L = ln(1/xi))
+//   X11M = 1 + g1xm/xi + g2xm L                X12M = g4xm/xi + g5xm L
+//   Y11M = 1 + g2ym L      Y12M = g5ym L                                             (L = ln(1/xi))
 //   Z11M = 1               Z12M = 0
 // The O(1) remainders (exact minus model) are tabulated in docs/lubrication.md. Paper 000 eq. A.7 lists the same g's
 // divided by 6 pi eta (e.g. its g^{Y^B_ii} = (2/3) a_i^2 g2yb).
@@ -36,7 +37,9 @@ struct LubricationCoefficients {
   double g1xg = 0, g2xg = 0;    // stresslet from squeeze / force from strain along d
   double g2yg = 0;              // stresslet from shear / force from strain across d
   double g2yh = 0, g5yh = 0;    // stresslet from rotation / torque from strain
-  double g1xm = 0, g4xm = 0;    // stresslet from strain, along d
+  double g1xm = 0, g2xm = 0;    // stresslet from strain, along d: self
+  double g4xm = 0, g5xm = 0;    // and pair (Jeffrey 1992 eq. 48b; without g2xm, g5xm a free pair's stresslet
+                                // would diverge as ln(1/xi) near contact)
   double g2ym = 0, g5ym = 0;    // stresslet from strain, across d
   static LubricationCoefficients for_ratio(double lambda);
 };

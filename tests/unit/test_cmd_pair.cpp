@@ -159,6 +159,22 @@ TEST(PairCommand, JsonHoldsEveryFunctionOfTheModel) {
     EXPECT_NE(value(r.out, key), -1e300) << key;
 }
 
+// --shear: the free pair's stress in three forms as JSON (dem/hydro/free_pair.hpp, tested in test_free_pair); the
+// squeezed equal pair at gap 0.01 carries xy 13.497 exactly, 9.247 (stresslet) and 9.293 (force dipole) in the model.
+TEST(PairCommand, ShearPrintsTheFreePairStressInThreeForms) {
+  const Result r = run("--a1 1 --a2 1 --gap 0.01 --shear --json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto form = [&](const std::string& name) { return r.out.substr(r.out.find("\"" + name + "\"")); };
+  EXPECT_NEAR(value(form("exact"), "xy"), 13.497, 0.01);
+  EXPECT_NEAR(value(form("stresslet"), "xy"), 9.247, 0.01);
+  EXPECT_NEAR(value(form("force_dipole"), "xy"), 9.293, 0.01);
+  EXPECT_NEAR(value(form("force_dipole"), "trace"), -18.587, 0.01);
+  for (const char* args : {"--a1 1 --a2 1 --gap 0.01 --shear --normal 0 0 0", "--a1 1 --a2 2 --gap 0.01 --shear"}) {
+    const Result bad = run(args);
+    EXPECT_EQ(bad.exit_code, 2) << args << ": " << bad.out;
+  }
+}
+
 TEST(PairCommand, OuterCutoffLeavesStokesDrag) {
   const Result r = run("--a1 1 --a2 1 --gap 0.5 --outer-cutoff 0.25 --json");
   ASSERT_EQ(r.exit_code, 0);
