@@ -3,7 +3,9 @@
 # issue 35's accuracy ensembles of the default step (runs/step_frictionless, runs/step_ensemble: the packings of
 # each case run by the current engine, set against the same campaigns run by the engine before issue 35,
 # runs/step_*_before with a binary built at 2fbb67f, and runs/step_particles: the former step rule with the current
-# contact step; docs/performance.md section f). A campaign folder that a new machine lacks is first rebuilt
+# contact step; runs/step_reference: the adhesive case with every step bound halved, implicit and explicit springs,
+# the converged reference the first ensembles showed is needed; runs/step_frictionless_diagnostic: what moves the
+# frictionless case's contacts per particle; docs/performance.md section f). A campaign folder that a new machine lacks is first rebuilt
 # from the committed table where there is one (tools/restore_campaign.py), so only unfinished points run (a finished
 # campaign costs nothing). The binary is copied to RUNS/bin/suspend-campaign, so that rebuilding build/ meanwhile
 # does not change what runs. One background job runs the sweeps in turn (two sweeps started side by side share the
@@ -29,6 +31,7 @@ campaigns=(
   "step_frictionless|$root/cases/validation/step_control_ensemble_frictionless.yaml|$root/results/step_control/frictionless_after/campaign.json"
   "step_ensemble|$root/cases/validation/step_control_ensemble.yaml|$root/results/step_control/adhesive_after/campaign.json"
   "step_particles|$root/cases/validation/step_control_ensemble_particles.yaml|$root/results/step_control/adhesive_particles/campaign.json"
+  "step_reference|$root/cases/validation/step_control_ensemble_reference.yaml|$root/results/step_control/adhesive_reference/campaign.json"
   "step_frictionless_diagnostic|$root/cases/validation/step_control_ensemble_frictionless_diagnostic.yaml|$root/results/step_control/frictionless_diagnostic/campaign.json"
 )
 queue=()
