@@ -45,6 +45,13 @@ SeriesRow row(int k) {
   r.stress[Contribution::contact_normal](1, 1) = -3.0 * k;
   return r;
 }
+Checkpoint small_checkpoint(std::size_t particles, const std::string& fingerprint) {
+  Checkpoint c;
+  c.state.particles = some_particles(particles);
+  c.fingerprint = fingerprint;
+  c.rng = serialize(Rng(1));
+  return c;
+}
 std::string temp(const std::string& name) {
   const std::string p = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_" + name;
   std::filesystem::remove(p);
@@ -140,10 +147,7 @@ TEST(Checkpoint, RoundTripIsBitExact) {
 // temporary file is removed.
 TEST(Checkpoint, NoRoomToCreateTheFileIsAnOutputFailure) {
   const std::string path = temp("no_room.h5");
-  Checkpoint c;
-  c.state.particles = some_particles(5);
-  c.fingerprint = "physics";
-  c.rng = serialize(Rng(1));
+  const Checkpoint c = small_checkpoint(5, "physics");
   rlimit old{};
   ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old), 0);
   const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
@@ -170,10 +174,7 @@ TEST(Checkpoint, NoRoomToCreateTheFileIsAnOutputFailure) {
 
 TEST(Checkpoint, RefusesOtherCaseCorruptFileAndNaN) {
   const std::string path = temp("refuse.h5");
-  Checkpoint c;
-  c.state.particles = some_particles(3);
-  c.fingerprint = "case A";
-  c.rng = serialize(Rng(1));
+  Checkpoint c = small_checkpoint(3, "case A");
   write_checkpoint(path, c);
   try {
     read_checkpoint(path, "case B");
