@@ -15,7 +15,10 @@
 # finished or superseded by the boundary campaigns; their committed tables are the record. Their few unfinished
 # points are not resumed: run now they would mix the current step with the former one in one table.
 # Logs: RUNS/NAME.log; stop with `pkill -f suspend-campaign`.
-# usage: tools/resume_campaigns.sh [SUSPEND (default build/bin/suspend)] [RUNS (default runs)]
+# The same campaigns run by the engine before issue 35 (runs/step_*_before) need a binary built at 2fbb67f: set
+# SUSPEND_BEFORE to it (e.g. `git worktree add /tmp/base 2fbb67f && bash /tmp/base/scripts/build.sh /tmp/base/build`)
+# and they are resumed first (their committed tables: results/step_control/*_before).
+# usage: [SUSPEND_BEFORE=BIN] tools/resume_campaigns.sh [SUSPEND (default build/bin/suspend)] [RUNS (default runs)]
 set -euo pipefail
 if [[ ${1:-} == -h || ${1:-} == --help ]]; then awk 'NR > 1 && !/^#/ {exit} NR > 1 {sub(/^# ?/, ""); print}' "$0"; exit 0; fi
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -34,19 +37,29 @@ campaigns=(
   "step_reference|$root/cases/validation/step_control_ensemble_reference.yaml|$root/results/step_control/adhesive_reference/campaign.json"
   "step_frictionless_diagnostic|$root/cases/validation/step_control_ensemble_frictionless_diagnostic.yaml|$root/results/step_control/frictionless_diagnostic/campaign.json"
 )
+before=()
+if [[ -n ${SUSPEND_BEFORE:-} ]]; then
+  if [[ ! -x $SUSPEND_BEFORE ]]; then echo "error: SUSPEND_BEFORE=$SUSPEND_BEFORE is not an executable" >&2; exit 2; fi
+  before=(
+    "step_frictionless_before|$root/cases/validation/step_control_ensemble_frictionless.yaml|$root/results/step_control/frictionless_before/campaign.json"
+    "step_ensemble_before|$root/cases/validation/step_control_ensemble.yaml|$root/results/step_control/adhesive_before/campaign.json"
+  )
+fi
 queue=()
-for entry in "${campaigns[@]}"; do
+for entry in "${before[@]}" "${campaigns[@]}"; do
   IFS='|' read -r name file table <<< "$entry"
   if [[ -f $table && ! -d $runs/$name/points ]]; then
     /usr/bin/python3 "$root/tools/restore_campaign.py" "$table" "$runs/$name"
   fi
-  queue+=("$name|$file")
+  binary=$runs/bin/suspend-campaign
+  [[ $name == *_before ]] && binary=$SUSPEND_BEFORE
+  queue+=("$name|$file|$binary")
 done
 export OMP_WAIT_POLICY=passive HDF5_USE_FILE_LOCKING=FALSE
 (
   for entry in "${queue[@]}"; do
-    IFS='|' read -r name file <<< "$entry"
-    "$runs/bin/suspend-campaign" sweep "$file" --out "$runs/$name" --jobs 2 --threads 1 --quiet >> "$runs/$name.log" 2>&1 || true
+    IFS='|' read -r name file binary <<< "$entry"
+    "$binary" sweep "$file" --out "$runs/$name" --jobs 2 --threads 1 --quiet >> "$runs/$name.log" 2>&1 || true
   done
 ) < /dev/null > /dev/null 2>&1 &
 disown
