@@ -12,9 +12,8 @@
 #include "linalg/gmres.hpp"
 
 namespace suspend::coupling {
+using std::numbers::pi;
 namespace {
-
-constexpr double pi = std::numbers::pi;
 
 using Index = Eigen::Index;
 

@@ -18,9 +18,9 @@
 #include "fcm/envelope.hpp"
 
 namespace suspend::coupling {
+using std::numbers::pi;
 namespace {
 
-constexpr double pi = std::numbers::pi;
 constexpr int format_version = 1;
 
 // All ResistanceScalars members written to and read from the cache, in this order.

@@ -10,8 +10,8 @@
 #include "fcm/spreading.hpp"
 
 namespace suspend::fcm {
+using std::numbers::pi;
 namespace {
-constexpr double pi = std::numbers::pi;
 
 // 4th-order central difference of f along axis k with step d.
 template <class F>

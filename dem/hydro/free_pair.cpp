@@ -4,9 +4,8 @@
 #include <numbers>
 
 namespace suspend::hydro {
+using std::numbers::pi;
 namespace {
-
-constexpr double pi = std::numbers::pi;
 
 // G v: X (d d - I/3)(d.v) + Y (d v + v d - 2 d d (d.v)).
 Mat3 of_velocity(double scale, const Vec3& d, double x, double y, const Vec3& v) {

@@ -11,9 +11,8 @@
 #include "dem/hydro/exact_remainder.hpp"
 
 namespace suspend::hydro {
+using std::numbers::pi;
 namespace {
-
-constexpr double pi = std::numbers::pi;
 
 Mat3 normal_projector(const Vec3& d) { return d * d.transpose(); }
 
