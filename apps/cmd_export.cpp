@@ -18,6 +18,19 @@ namespace suspend::app {
 
 namespace fs = std::filesystem;
 
+namespace {
+// The installed copy beside the program (PREFIX/share/suspend/python), else the one of the source tree it was built from.
+std::string export_script() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path installed = exe.parent_path() / SUSPEND_INSTALLED_PYTHON_DIR / "suspend" / "export.py";
+    if (fs::is_regular_file(installed)) return fs::weakly_canonical(installed).string();
+  }
+  return SUSPEND_PYTHON_DIR "/suspend/export.py";
+}
+}  // namespace
+
 void add_export_command(CLI::App& app) {
   struct Options {
     std::string run, format, out;
@@ -29,7 +42,7 @@ void add_export_command(CLI::App& app) {
   cmd->add_option("--out,-o", opt->out, "file to write (default: RUN_DIR/run.xyz or run.gsd)");
   cmd->callback([opt] {
     const std::string file = run_file_argument(opt->run, "export");
-    const std::string python = "/usr/bin/python3", script = SUSPEND_PYTHON_DIR "/suspend/export.py";
+    const std::string python = "/usr/bin/python3", script = export_script();
     if (access(python.c_str(), X_OK) != 0 || !fs::is_regular_file(script))
       throw InputError("export: needs Debian's python3 (" + python + ") and " + script);
     std::vector<std::string> args = {python, script, file, "--format", opt->format};
