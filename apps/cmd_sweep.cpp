@@ -1,5 +1,5 @@
 // `suspend sweep CAMPAIGN.yaml --out DIR [--jobs N] [--threads T] [--retry-failed] [--point-seconds S] [--quiet]`,
-// `suspend sweep CAMPAIGN.yaml --list [--out DIR]`, `suspend sweep CAMPAIGN.yaml --out DIR --point NAME`,
+// `suspend sweep CAMPAIGN.yaml --list [--out DIR]`, `suspend sweep CAMPAIGN.yaml --out DIR --status [--jobs N]`, `suspend sweep CAMPAIGN.yaml --out DIR --point NAME`,
 // `mpirun -n K suspend sweep CAMPAIGN.yaml --out DIR` (rank 0 hands points to ranks 1..K-1).
 #include <omp.h>
 
@@ -11,6 +11,7 @@
 #include "campaign/campaign.hpp"
 #include "campaign/mpi_sweep.hpp"
 #include "campaign/point_record.hpp"
+#include "campaign/status.hpp"
 #include "campaign/sweep.hpp"
 #include "campaign/table.hpp"
 #include "core/error.hpp"
@@ -23,6 +24,7 @@ void add_sweep_command(CLI::App& app) {
     std::string out;
     campaign::SweepOptions sweep;
     bool list = false;
+    bool status = false;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
@@ -39,6 +41,8 @@ void add_sweep_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--point", opt->sweep.only_point, "run this point only (one scheduler job per point)");
   cmd->add_flag("--list", opt->list, "print the points (with their status when --out is given) and exit");
+  cmd->add_flag("--status", opt->status,
+                "print each point's state (running ones with their strain and rate) and the time left; starts nothing");
   cmd->add_flag("--quiet,-q", opt->sweep.quiet, "no progress lines");
   cmd->callback([opt, cmd] {
     const campaign::Campaign c = campaign::load_campaign(opt->campaign_file);
@@ -55,6 +59,10 @@ void add_sweep_command(CLI::App& app) {
     if (opt->out.empty()) throw InputError("--out: missing; give the campaign directory");
     opt->sweep.out_dir = opt->out;
     if (cmd->count("--jobs") == 0) opt->sweep.jobs = std::max(1, omp_get_num_procs() / opt->sweep.threads);
+    if (opt->status) {
+      campaign::print_status(c, opt->out, opt->sweep.jobs);
+      return;
+    }
     const int code = campaign::launched_by_mpi() ? campaign::run_sweep_mpi(c, opt->sweep)
                                                  : campaign::run_sweep(c, opt->sweep);
     if (code != 0) std::exit(code);

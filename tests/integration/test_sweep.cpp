@@ -2,7 +2,7 @@
 // and its runs followed by the same command (the killed point's wall time kept up to its last checkpoint), and
 // point by point as a scheduler would run it; a changed campaign is refused naming the key; a stress-controlled
 // point that stops flowing ends as `jammed`; a point over its wall-clock budget is `failed` and kept until
-// --retry-failed.
+// --retry-failed; --status reads a finished and a half-finished sweep.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -67,6 +67,10 @@ TEST(Sweep, SameTableWithJobsAfterSigkillAndPointByPoint) {
   EXPECT_EQ(ta["points"][2]["name"], "phi0.5_mu0.5");
   EXPECT_EQ(ta["points"][2]["parameters"]["contact.mu"], 0.5);
   EXPECT_EQ(ta["points"][2]["case"]["mu_s"], 0.5);
+  const Result done = run({"sweep", file, "--out", a, "--status"});
+  ASSERT_EQ(done.code, 0) << done.err;
+  EXPECT_NE(done.out.find("3 point(s): 3 done"), std::string::npos) << done.out;
+  EXPECT_NE(done.out.find("nothing left to run"), std::string::npos) << done.out;
 
   // B: the sweep and its runs are killed together (SIGKILL) mid-point, then the same command finishes it. The
   // point's record already holds its wall time up to its last checkpoint (the sweep adds it at each checkpoint).
@@ -94,6 +98,14 @@ TEST(Sweep, SameTableWithJobsAfterSigkillAndPointByPoint) {
   }
   ASSERT_TRUE(killed) << "no point was caught mid-run with its wall time so far in its record";
   EXPECT_EQ(wait_exit(pid), 128 + SIGKILL);
+  // --status of the half-finished sweep: the killed point is interrupted (its process is gone) and continues from
+  // its checkpoint; nothing is started.
+  const Result half = run({"sweep", file, "--out", b, "--status"});
+  ASSERT_EQ(half.code, 0) << half.err;
+  EXPECT_NE(half.out.find("interrupted"), std::string::npos) << half.out;
+  EXPECT_NE(half.out.find("continues from strain"), std::string::npos) << half.out;
+  EXPECT_NE(half.out.find("time left"), std::string::npos) << half.out;
+  EXPECT_EQ(half.out.find("nothing left"), std::string::npos) << half.out;
   const Result rb = run({"sweep", file, "--out", b, "--jobs", "1", "--quiet"});
   ASSERT_EQ(rb.code, 0) << rb.err;
   json tb = table(b);
