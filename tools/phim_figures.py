@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """Figures of a phi_m(sigma*) campaign, after paper 004 (Orsi et al.): Fig. 15 (phi_m against sigma*, every method on
 one plot, with the paper's non-adhesive limits; where a jammed point lies below the Maron-Pierce fit, the bracket
-between the densest flowing and the least dense jammed point instead), Fig. 11 (eta_r against phi per sigma*, with the Maron-Pierce fits),
-Fig. 14 (eta_r against phi/phi_m), Figs. 16-19 (contact-stress ratios against phi/phi_m) and Fig. 22 (mu(J)).
+between the densest flowing and the least dense jammed point instead, and no fit; fits with chi^2/dof above
+POOR_FIT_CHI2 open), Fig. 11 (eta_r against phi per sigma*, with the Maron-Pierce fits, dashed where a jammed point
+contradicts them), Fig. 14 (eta_r against phi/phi_m, with the paper's Maron-Pierce master curve), Figs. 16-19
+(contact-stress ratios against phi/phi_m) and Fig. 22 (mu(J)). Figure text cites paper 004 as "Orsi et al.".
 
 usage: tools/phim_figures.py RESULTS_DIR [--out FIGURE_DIR]
 
@@ -17,8 +19,30 @@ import sys
 from debian_python import require
 
 PAPER_NON_ADHESIVE = {0.0: 0.651, 0.1: 0.632, 0.5: 0.592}  # paper 004 Fig. 15 (FDM)
+PAPER = "Orsi et al."  # paper 004 as the figures cite it (docs/references.md)
+PAPER_ALPHA = (0.65, 1.0)  # paper 004's Maron-Pierce prefactors (Fig. 32, results/README.md): Fig. 14's master curve
+# A Maron-Pierce fit with chi^2/dof above this is drawn open in Fig. 15: the errors are already inflated by
+# sqrt(chi^2/dof), but above ~10 the misfit is systematic (the data curve away from the form), not noise.
+POOR_FIT_CHI2 = 10.0
+METHOD_NAME = {"pairwise": "pairwise", "fcm": "FCM"}
 METHOD_STYLE = {"pairwise": dict(marker="o", linestyle="-", fillstyle="full"),
                 "fcm": dict(marker="s", linestyle="--", fillstyle="none")}
+METHOD_SHIFT = {"pairwise": 1.0, "fcm": 1.06}  # Fig. 15: FCM drawn 6% to the right of its sigma* for clarity
+SIGMA_LABEL = "$\\sigma^* = 6\\pi\\Sigma_{12} a_1^2 / F_{\\mathrm{adh}}$ (dimensionless)"
+ETA_LABEL = "$\\eta_r = \\eta / \\eta_0$ (relative viscosity)"
+REDUCED_PHI_LABEL = "$\\phi / \\phi_m(\\mu_s, \\sigma^*)$ (dimensionless)"
+
+
+def method_name(method):
+    return METHOD_NAME.get(method, method)
+
+
+def method_order(method):
+    return (list(METHOD_NAME).index(method) if method in METHOD_NAME else len(METHOD_NAME), method)
+
+
+def sigma_text(sigma):
+    return "$\\infty$" if sigma == math.inf else "%g" % sigma
 
 
 def usage(message=None):
@@ -94,45 +118,95 @@ def drawn_phi_m(fit):
     return None
 
 
+def poor_fit(fit):
+    return (fit.get("chi2_reduced") or 0.0) > POOR_FIT_CHI2
+
+
+def axis_break(ax, x):
+    """Two short slanted strokes across the bottom and top spines at data abscissa x: the axis jumps from the finite
+    sigma* to the non-adhesive limit drawn at 'infinity'."""
+    import matplotlib.transforms as transforms
+    trans = transforms.blended_transform_factory(ax.transData, ax.transAxes)
+    for y in (0.0, 1.0):
+        for dx in (0.965, 1.035):
+            ax.plot([x * dx / 1.04, x * dx * 1.04], [y - 0.015, y + 0.015], transform=trans, color="k",
+                    linewidth=0.9, clip_on=False, zorder=5)
+        ax.plot([x * 0.965, x * 1.035], [y, y], transform=trans, color="white", linewidth=2.5, clip_on=False,
+                zorder=4)
+
+
 def figure_15(methods, out):
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+    fig, ax = plt.subplots(figsize=(8.6, 4.6))
     drawn = {method: [(f, d) for f in fits["fits"] if (d := drawn_phi_m(f))]
              for method, (_, fits) in methods.items()}
     shown = [pair for pairs in drawn.values() for pair in pairs]
     all_mu = sorted({f["mu_s"] for f, _ in shown} | set(PAPER_NON_ADHESIVE))
     finite_max = max([sigma_of(f) for f, _ in shown if sigma_of(f) < math.inf] + [10.0])
     x_inf = finite_max * 3.0  # where the non-adhesive limit is drawn
-    bracket_label = "flowing below, jammed above (fit overshoots)"
-    for method, pairs in drawn.items():
-        style = METHOD_STYLE.get(method, dict(marker="^", linestyle=":", fillstyle="full"))
+    handles = []
+    any_poor = any_bracket = False
+    for method, pairs in sorted(drawn.items(), key=lambda item: method_order(item[0])):
+        style = METHOD_STYLE.get(method, dict(marker="^", linestyle=":"))
+        shift = METHOD_SHIFT.get(method, 1.0)
         for mu in sorted({f["mu_s"] for f, _ in pairs}):
             group = sorted(((f, d) for f, d in pairs if f["mu_s"] == mu), key=lambda pair: sigma_of(pair[0]))
-            x = [x_inf if sigma_of(f) == math.inf else sigma_of(f) for f, _ in group]
             colour = mu_colour(mu, all_mu)
-            ax.errorbar(x, [d[0] for _, d in group], yerr=[d[1] for _, d in group], color=colour, capsize=3,
-                        label="%s, $\\mu_s$ = %g" % (method, mu), **style)
-            for xi, (_, (_, _, b)) in zip(x, group):
-                if b:
-                    ax.vlines(xi, b[0], b[1], color=colour, linewidth=5, alpha=0.45, label=bracket_label)
-                    bracket_label = None
+            # Guide lines join neighbouring fits only: never a fit to a bracket, nor a finite sigma* to infinity.
+            run = []
+            for f, d in group + [(None, None)]:
+                if f is not None and not d[2] and sigma_of(f) < math.inf:
+                    run.append((sigma_of(f) * shift, d[0]))
+                    continue
+                if len(run) > 1:
+                    ax.plot([r[0] for r in run], [r[1] for r in run], color=colour, linestyle=style["linestyle"],
+                            linewidth=1.2, zorder=2)
+                run = []
+            for f, (phi_m, err, b) in group:
+                x = (x_inf if sigma_of(f) == math.inf else sigma_of(f)) * shift
+                if b:  # the data contradict the fit: the bracket is the result, no marker and no fit
+                    ax.errorbar([x, x], [b[0], b[1]], color=colour, linewidth=5, alpha=0.6, capsize=0,
+                                solid_capstyle="butt", zorder=3)
+                    ax.plot([x, x], [b[0], b[1]], color=colour, linestyle="none", marker="_", markersize=9,
+                            markeredgewidth=1.5, zorder=3)
+                    any_bracket = True
+                    continue
+                poor = poor_fit(f)
+                any_poor |= poor
+                ax.errorbar([x], [phi_m], yerr=[err], color=colour, capsize=3, marker=style["marker"],
+                            markersize=6, linestyle="none", markerfacecolor="white" if poor else colour,
+                            markeredgewidth=1.3, zorder=4)
+            handles.append(Line2D([], [], color=colour, marker=style["marker"], linestyle=style["linestyle"],
+                                  label="%s, $\\mu_s$ = %g" % (method_name(method), mu)))
+    if any_poor:
+        handles.append(Line2D([], [], color="0.3", marker="o", markerfacecolor="white", linestyle="none",
+                              label="open: Maron-Pierce fit with\n$\\chi^2/\\mathrm{dof} > %g$" % POOR_FIT_CHI2))
+    if any_bracket:
+        handles.append(Patch(color="0.3", alpha=0.6,
+                             label="bar: densest flowing to least dense\njammed $\\phi$ (a jammed point lies\n"
+                                   "below the fitted $\\phi_m$: no fit)"))
     for mu, phi in PAPER_NON_ADHESIVE.items():
-        ax.axhline(phi, color=mu_colour(mu, all_mu), linestyle=":", linewidth=1)
-        ax.annotate("paper 004, $\\mu_s$ = %g, no adhesion" % mu, (0.55, phi), fontsize=7, va="bottom",
-                    color=mu_colour(mu, all_mu))
-    ax.axvspan(0.7, 0.8, color="0.85", zorder=0)
-    ax.annotate("paper 004: $\\mu_s \\geq 0.3$ curves\nmeet near 0.5", (0.82, 0.49), fontsize=7)
+        ax.axhline(phi, color=mu_colour(mu, all_mu), linestyle=":", linewidth=1.1, zorder=1)
+    handles.append(Line2D([], [], color="0.3", linestyle=":",
+                          label="%s, no adhesion (FDM),\ncolour by $\\mu_s$" % PAPER))
+    ax.axvspan(0.7, 0.8, color="0.88", zorder=0)
+    handles.append(Patch(color="0.88", label="%s: $\\mu_s \\geq 0.3$ curves\nmeet near $\\phi_m \\approx 0.5$"
+                                           % PAPER))
     lowest = min([d[2][0] if d[2] else d[0] - d[1] for _, d in shown] + [0.47])
-    highest = max([d[0] + d[1] for _, d in shown if not d[2]] + [0.67])
+    highest = max([d[2][1] if d[2] else d[0] + d[1] for _, d in shown] + [0.67])
     ax.set_ylim(lowest - 0.01, highest + 0.01)
     ax.set_xscale("log")
     ax.set_xlim(0.5, x_inf * 1.5)
     ax.set_xticks([1, 10, x_inf])
+    ax.set_xticks([t for t in (0.5, 0.6, 0.7, 0.8, 0.9, 2, 3, 4, 5, 6, 7, 8, 9) if t > 0.5], minor=True)
     ax.set_xticklabels(["1", "10", "$\\infty$"])
-    ax.set_xlabel("$\\sigma^* = 6\\pi\\Sigma_{12} a_1^2 / F^{adh}$")
-    ax.set_ylabel("$\\phi_m^\\mu(\\sigma^*)$")
-    ax.legend(fontsize=7, loc="lower right")
-    ax.set_title("Maximum volume fraction against reduced stress (paper 004 Fig. 15)", fontsize=9)
+    axis_break(ax, math.sqrt(finite_max * x_inf))
+    ax.set_xlabel(SIGMA_LABEL)
+    ax.set_ylabel("$\\phi_m(\\mu_s, \\sigma^*)$ (maximum volume fraction)")
+    ax.legend(handles=handles, fontsize=7.5, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0,
+              frameon=False, labelspacing=0.9)
     save(fig, out, "fig15_phim_sigma_star")
     plt.close(fig)
 
@@ -140,28 +214,48 @@ def figure_15(methods, out):
 def figure_11(methods, out):
     import matplotlib.pyplot as plt
     import numpy as np
+    from matplotlib.lines import Line2D
     for method, (_, fits) in methods.items():
         mus = sorted({f["mu_s"] for f in fits["fits"]})
-        fig, axes = plt.subplots(1, len(mus), figsize=(4.2 * len(mus), 3.8), squeeze=False)
+        fig, axes = plt.subplots(1, len(mus), figsize=(4.4 * len(mus), 4.0), squeeze=False)
         for ax, mu in zip(axes[0], mus):
             groups = [f for f in fits["fits"] if f["mu_s"] == mu]
             sigmas = [sigma_of(f) for f in groups]
+            extra = []
             for f in groups:
                 c = sigma_colour(sigma_of(f), sigmas)
                 data = np.array(f["data"]).reshape(-1, 3)
-                label = "$\\sigma^*$ = " + ("$\\infty$" if sigma_of(f) == math.inf else "%g" % sigma_of(f))
+                label = "$\\sigma^*$ = " + sigma_text(sigma_of(f))
+                if f.get("chi2_reduced") is not None:
+                    label += ", $\\chi^2/\\mathrm{dof}$ = %.3g" % f["chi2_reduced"]
                 if len(data):
-                    ax.errorbar(data[:, 0], data[:, 1], yerr=data[:, 2], fmt="o", color=c, capsize=2, label=label)
+                    ax.errorbar(data[:, 0], data[:, 1], yerr=data[:, 2], fmt="o", color=c, capsize=2, label=label,
+                                markersize=5)
                 if f.get("phi_m") is not None:
+                    # a fit whose phi_m lies above a jammed point is contradicted by the data: dashed
+                    contradicted = bool(bracket(f))
                     phi = np.linspace(min(data[:, 0].min(), 0.3), f["phi_m"] * 0.985, 100)
-                    ax.plot(phi, f["alpha"] / (1 - phi / f["phi_m"]) ** 2, color=c)
+                    ax.plot(phi, f["alpha"] / (1 - phi / f["phi_m"]) ** 2, color=c,
+                            linestyle="--" if contradicted else "-", linewidth=1.2)
+                    if contradicted and "--" not in extra:
+                        extra.append("--")
                 for phi_j in f.get("jammed_phi", []):
-                    ax.axvline(phi_j, color=c, linestyle=":", linewidth=0.8)
+                    ax.axvline(phi_j, color=c, linestyle=":", linewidth=1.0)
+                    if ":" not in extra:
+                        extra.append(":")
+            handles, _ = ax.get_legend_handles_labels()
+            handles += [Line2D([], [], color="0.3", linestyle="-", label="Maron-Pierce fit")]
+            if "--" in extra:
+                handles.append(Line2D([], [], color="0.3", linestyle="--",
+                                      label="fit past a jammed point\n(not the result)"))
+            if ":" in extra:
+                handles.append(Line2D([], [], color="0.3", linestyle=":", label="$\\phi$ of a jammed point"))
             ax.set_yscale("log")
-            ax.set_xlabel("$\\phi$")
-            ax.set_ylabel("$\\eta_r$")
-            ax.set_title("%s, $\\mu_s$ = %g (dotted: jammed points)" % (method, mu), fontsize=9)
-            ax.legend(fontsize=7)
+            ax.set_xlabel("$\\phi$ (volume fraction)")
+            ax.set_ylabel(ETA_LABEL)
+            ax.set_title("%s, $\\mu_s$ = %g" % (method_name(method), mu), fontsize=9)
+            ax.legend(handles=handles, fontsize=6.5, loc="upper left")
+        fig.tight_layout()
         save(fig, out, "fig11_eta_phi_%s" % method)
         plt.close(fig)
 
@@ -180,33 +274,52 @@ def reduced_points(methods):
     return rows
 
 
+def method_marker(method):
+    style = METHOD_STYLE.get(method, {})
+    return dict(marker=style.get("marker", "^"), fillstyle=style.get("fillstyle", "full"))
+
+
 def figure_reduced(methods, out):
     import matplotlib.pyplot as plt
+    import numpy as np
     rows = reduced_points(methods)
     if not rows:
         return
     all_mu = sorted({r[1] for r in rows})
-    panels = [("eta_r", "$\\eta_r$", "fig14_eta_reduced_phi", True),
-              ("Sigma_c22/Sigma_12", "$-\\Sigma^c_{22}/\\Sigma_{12}$", "fig16_contact_22_reduced_phi", False),
-              ("Sigma_c12/Sigma_12", "$\\Sigma^c_{12}/\\Sigma_{12}$", "fig19_contact_12_reduced_phi", False)]
-    for key, label, name, log in panels:
-        fig, ax = plt.subplots(figsize=(5.4, 4.0))
-        for method, mu, s, x, d in rows:
-            sign = -1.0 if key == "Sigma_c22/Sigma_12" else 1.0
-            style = METHOD_STYLE.get(method, {})
-            ax.errorbar(x, sign * d[key]["mean"], yerr=d[key]["sem"], marker=style.get("marker", "^"),
-                        fillstyle=style.get("fillstyle", "full"), color=mu_colour(mu, all_mu), linestyle="none",
-                        capsize=2, markersize=4)
-        for method in methods:
-            for mu in all_mu:
-                ax.plot([], [], marker=METHOD_STYLE.get(method, {}).get("marker", "^"), linestyle="none",
-                        fillstyle=METHOD_STYLE.get(method, {}).get("fillstyle", "full"), color=mu_colour(mu, all_mu),
-                        label="%s, $\\mu_s$ = %g" % (method, mu))
+    panels = [("eta_r", ETA_LABEL, "fig14_eta_reduced_phi", True, "upper left"),
+              ("Sigma_c22/Sigma_12", "$-\\Sigma^c_{22}/\\Sigma_{12}$ (dimensionless)", "fig16_contact_22_reduced_phi",
+               False, "upper left"),
+              ("Sigma_c12/Sigma_12", "$\\Sigma^c_{12}/\\Sigma_{12}$ (dimensionless)", "fig19_contact_12_reduced_phi",
+               False, "lower right")]
+    for key, label, name, log, where in panels:
+        fig, ax = plt.subplots(figsize=(5.6, 4.2))
         if log:
             ax.set_yscale("log")
-        ax.set_xlabel("$\\phi / \\phi_m^\\mu(\\sigma^*)$")
+        sign = -1.0 if key == "Sigma_c22/Sigma_12" else 1.0
+        for method, mu, s, x, d in rows:
+            ax.errorbar(x, sign * d[key]["mean"], yerr=d[key]["sem"], color=mu_colour(mu, all_mu), linestyle="none",
+                        capsize=2, markersize=4, **method_marker(method))
+        # only the series that have points here
+        for method in sorted(methods, key=method_order):
+            for mu in all_mu:
+                if any(r[0] == method and r[1] == mu for r in rows):
+                    ax.plot([], [], linestyle="none", color=mu_colour(mu, all_mu),
+                            label="%s, $\\mu_s$ = %g" % (method_name(method), mu), **method_marker(method))
+        if key == "eta_r":
+            # the axes follow the data; the master curve is cut at their edges
+            ax.relim()
+            ax.autoscale_view()
+            xlim, ylim = ax.get_xlim(), ax.get_ylim()
+            x = np.linspace(xlim[0], 0.999, 400)
+            lo, hi = PAPER_ALPHA
+            ax.fill_between(x, lo / (1 - x) ** 2, hi / (1 - x) ** 2, color="0.82", zorder=0, linewidth=0,
+                            label="Maron-Pierce $\\eta_r = \\alpha\\,(1 - \\phi/\\phi_m)^{-2}$\n"
+                                  "$\\alpha$ = %g$-$%g (%s)" % (lo, hi, PAPER))
+            ax.set_xlim(xlim)
+            ax.set_ylim(ylim)
+        ax.set_xlabel(REDUCED_PHI_LABEL)
         ax.set_ylabel(label)
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=7, loc=where)
         save(fig, out, name)
         plt.close(fig)
 
@@ -217,22 +330,22 @@ def figure_22(methods, out):
     if not rows:
         return
     sigmas = sorted({r[2] for r in rows})
-    fig, ax = plt.subplots(figsize=(5.4, 4.0))
+    fig, ax = plt.subplots(figsize=(5.6, 4.2))
     for method, mu, s, x, d in rows:
         if d["J"]["mean"] > 0 and d["mu"]["mean"] > 0:
-            style = METHOD_STYLE.get(method, {})
             ax.errorbar(d["J"]["mean"], d["mu"]["mean"], xerr=d["J"]["sem"], yerr=d["mu"]["sem"],
-                        marker=style.get("marker", "^"), fillstyle=style.get("fillstyle", "full"),
-                        color=sigma_colour(s, sigmas), linestyle="none", capsize=2, markersize=4)
+                        color=sigma_colour(s, sigmas), linestyle="none", capsize=2, markersize=4,
+                        **method_marker(method))
     for s in sigmas:
-        ax.plot([], [], "o", color=sigma_colour(s, sigmas),
-                label="$\\sigma^*$ = " + ("$\\infty$" if s == math.inf else "%g" % s))
+        ax.plot([], [], "o", color=sigma_colour(s, sigmas), label="$\\sigma^*$ = " + sigma_text(s))
+    for method in sorted(methods, key=method_order):
+        if any(r[0] == method for r in rows):
+            ax.plot([], [], linestyle="none", color="0.3", label=method_name(method), **method_marker(method))
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("$J = -\\eta_0\\dot\\gamma / \\Sigma^c_{22}$")
-    ax.set_ylabel("$\\mu = -\\Sigma_{12} / \\Sigma^c_{22}$")
-    ax.legend(fontsize=7)
-    ax.set_title("Macroscopic friction against viscous number (paper 004 Fig. 22)", fontsize=9)
+    ax.set_xlabel("$J = -\\eta_0\\dot\\gamma / \\Sigma^c_{22}$ (viscous number, dimensionless)")
+    ax.set_ylabel("$\\mu = -\\Sigma_{12} / \\Sigma^c_{22}$ (dimensionless)")
+    ax.legend(fontsize=7, loc="upper left")
     save(fig, out, "fig22_mu_J")
     plt.close(fig)
 
