@@ -35,7 +35,9 @@ double clock_seconds(const std::string& t) {
 std::string hours_text(double seconds) {
   char b[32];
   if (seconds < 0) return "unknown";
-  if (seconds < 3600)
+  if (seconds < 60)
+    std::snprintf(b, sizeof b, "%.0f s", seconds);
+  else if (seconds < 3600)
     std::snprintf(b, sizeof b, "%.0f min", seconds / 60.0);
   else
     std::snprintf(b, sizeof b, "%.1f h", seconds / 3600.0);

@@ -3,8 +3,8 @@
 # suspension (paper 004: adhesive, frictional, bidisperse, lubricated; cases/demo_campaign.yaml over
 # cases/quickstart.yaml), two points at a time, then the Maron-Pierce fits of `suspend phim`.
 # It builds only the program (the tests' build tree and configuration: `bash scripts/test.sh` afterwards compiles
-# only the tests). About 6 minutes on 2 cores from a fresh machine: 2 for the packages, 2 for the build (seconds
-# with a warm ccache), 2 for the sweep.
+# only the tests). About 5 minutes on 2 cores from a fresh machine: 2 for the packages, 2 for the build (seconds
+# with a warm ccache), 1 for the sweep.
 # usage: scripts/demo.sh [OUT (default runs/demo)]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -20,7 +20,7 @@ bash "$root/scripts/build.sh" "$root/build" --target suspend
 suspend="$root/build/bin/suspend"
 
 points=$("$suspend" sweep "$root/cases/demo_campaign.yaml" --list | wc -l)
-stage 3/3 "sweep of $points points, two at a time (about 2 minutes; each line is a point started or finished)"
+stage 3/3 "sweep of $points points, two at a time (under a minute; each line is a point started or finished)"
 rm -rf "$out"
 OMP_WAIT_POLICY=passive "$suspend" sweep "$root/cases/demo_campaign.yaml" --out "$out" --jobs 2 --threads 1
 echo
