@@ -10,25 +10,15 @@ import sys
 import tempfile
 
 import numpy as np
+from script_checks import check, failures, run_quickstart
 
 suspend_bin, source = sys.argv[1], sys.argv[2]
 sys.path.insert(0, os.path.join(source, "python"))
 import suspend  # noqa: E402
 
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what)
-
-
 with tempfile.TemporaryDirectory() as work:
     run_dir = os.path.join(work, "run")
-    subprocess.run([suspend_bin, "run", os.path.join(source, "cases/quickstart.yaml"), "--set", "run.strain=0.4",
-                    "--set", "run.average_from=0.2", "--set", "run.output.snapshot_every=0.2", "--out", run_dir,
-                    "--quiet", "--threads", "1"], check=True)
+    run_quickstart(suspend_bin, source, run_dir, 0.4, 0.2)
     run = suspend.load_run(run_dir)
     snaps = list(run.snapshots())
 

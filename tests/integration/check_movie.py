@@ -11,24 +11,13 @@ import sys
 import tempfile
 
 import h5py
+from script_checks import check, failures, run_quickstart
 
 suspend_bin, source = sys.argv[1], sys.argv[2]
 tool = os.path.join(source, "tools/render_movie.py")
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what)
-
-
 with tempfile.TemporaryDirectory() as work:
     run_dir = os.path.join(work, "run")
-    # One thread: a fraction of a second, where spin-waiting OpenMP threads on a busy node can take ten.
-    subprocess.run([suspend_bin, "run", os.path.join(source, "cases/quickstart.yaml"), "--set", "run.strain=0.3",
-                    "--set", "run.average_from=0.1", "--set", "run.output.snapshot_every=0.1", "--out", run_dir,
-                    "--quiet", "--threads", "1"], check=True)
+    run_quickstart(suspend_bin, source, run_dir, 0.3, 0.1)
     with h5py.File(os.path.join(run_dir, "run.h5"), "r") as f:
         snapshots = len(f["snapshots"])
     check(snapshots == 4, f"{snapshots} snapshots, expected 4 (strain 0 to 0.3)")
