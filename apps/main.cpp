@@ -1,5 +1,8 @@
 // suspend: the command-line program. Thin: parse, build objects, run.
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <string>
 
@@ -51,6 +54,12 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;
+  }
+  // A result that never reached its reader is not a success: standard output on a full device (or a closed pipe)
+  // fails here, when the buffered text is written.
+  if (std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout.flush()) {
+    std::cerr << "error: writing the standard output failed: " << std::strerror(errno) << "\n";
+    return suspend::exit_output_error;
   }
   return 0;
 }

@@ -111,8 +111,12 @@ void install_stop_handlers() {
 
 int run_case(const Case& c, const RunOptions& o) {
   const auto started = std::chrono::steady_clock::now();
-  const int threads = o.threads > 0 ? o.threads : (c.run.threads > 0 ? static_cast<int>(c.run.threads)
-                                                                      : omp_get_num_procs());
+  const int cores = omp_get_num_procs();
+  int threads = o.threads > 0 ? o.threads : (c.run.threads > 0 ? static_cast<int>(c.run.threads) : cores);
+  if (threads > cores) {  // more threads than cores only wait for each other (4096 ran 120x slower)
+    std::fprintf(stderr, "warning: %d threads asked for, %d cores here: running on %d\n", threads, cores, cores);
+    threads = cores;
+  }
   omp_set_num_threads(threads);
   const std::string fingerprint = physics_fingerprint(c);
   const OutputCase& every = c.run.output;

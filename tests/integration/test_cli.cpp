@@ -17,6 +17,7 @@
 #include <sstream>
 #include <thread>
 
+#include "core/error.hpp"
 #include "io/hdf5.hpp"
 #include "io/run_file.hpp"
 #include "tests/integration/cli_support.hpp"
@@ -253,6 +254,23 @@ TEST(Cli, QuietPrintsNothingAndTheFinalStateIsASnapshot) {
   EXPECT_NEAR(h5::double_attribute(f.id(), "snapshots/000002", "strain"), 0.3, 1e-3);
   const std::string summary = read_text(c + "/summary.json");
   EXPECT_NE(summary.find("\"status\": \"done\""), std::string::npos) << summary;
+}
+
+TEST(Cli, OutputThatCannotBeWrittenIsAnError) {
+  // `suspend check CASE > /dev/full`: the resolved case never reaches its reader, so the program does not succeed.
+  const std::string err = scratch() + "/full_err.txt";
+  EXPECT_EQ(wait_exit(spawn({"check", restart_case}, err, false, "/dev/full")), suspend::exit_output_error);
+  const std::string text = read_text(err);
+  EXPECT_EQ(text.rfind("error: writing the standard output failed", 0), 0u) << text;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+}
+
+TEST(Cli, ThreadsBeyondTheCoresAreCappedWithAWarning) {
+  const std::string c = fresh_dir("threads");
+  const Result r = run(with_lighter({"run", restart_case, "--out", c, "--quiet", "--threads", "4096", "--set",
+                                     "run.strain=0.02", "--set", "run.average_from=0.01"}));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: 4096 threads asked for"), std::string::npos) << r.err;
 }
 
 TEST(Cli, CrossvalRefusesAFolderOfAnotherCase) {
