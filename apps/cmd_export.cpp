@@ -34,12 +34,16 @@ std::string export_script() {
 void add_export_command(CLI::App& app) {
   struct Options {
     std::string run, format, out;
+    bool force = false;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("export", "Write a run's snapshots as extended XYZ (OVITO, ASE) or GSD (freud, OVITO)");
   cmd->add_option("run", opt->run, "run directory (or its run.h5)")->required();
   cmd->add_option("--format", opt->format, "extxyz or gsd")->required()->check(CLI::IsMember({"extxyz", "gsd"}));
-  cmd->add_option("--out,-o", opt->out, "file to write (default: RUN_DIR/run.xyz or run.gsd)");
+  cmd->add_option("--out,-o", opt->out,
+                  "file to write (default: RUN_DIR/run.xyz or run.gsd); an earlier export of the format is replaced, "
+                  "any other existing file only with --force, a run's own files never");
+  cmd->add_flag("--force", opt->force, "replace an existing --out that is not an export of this format");
   cmd->callback([opt] {
     const std::string file = run_file_argument(opt->run, "export");
     const std::string python = "/usr/bin/python3", script = export_script();
@@ -47,6 +51,7 @@ void add_export_command(CLI::App& app) {
       throw InputError("export: needs Debian's python3 (" + python + ") and " + script);
     std::vector<std::string> args = {python, script, file, "--format", opt->format};
     if (!opt->out.empty()) args.insert(args.end(), {"--out", opt->out});
+    if (opt->force) args.push_back("--force");
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);

@@ -78,11 +78,44 @@ def write_gsd(run, out):
             trajectory.append(frame)
 
 
+# What a run or a campaign folder holds: never an export's target, --force or not.
+RUN_FILES = {"run.h5", "checkpoint.h5", "run.xdmf", "summary.json", "point.json", "log.txt", "campaign.json",
+             "campaign.csv", "sweep.json", "phim.json", "phim.csv"}
+
+
+def is_export(path, fmt):
+    """Whether an existing file is an export of this format (so that exporting again may replace it)."""
+    try:
+        with open(path, "rb") as f:
+            head = f.read(4096)
+    except OSError:
+        return False
+    if fmt == "gsd":
+        return head[:8] == bytes.fromhex("df65df65df65df65")  # GSD's magic number, little-endian
+    lines = head.split(b"\n")
+    return len(lines) > 2 and lines[0].strip().isdigit() and b"Lattice=" in lines[1]
+
+
+def refuse_out(out, fmt, force):
+    """Why `out` may not be written (None when it may): the run's own files never, a folder or a missing folder
+    never, any other existing file that is not an export of this format only with --force."""
+    if os.path.basename(out) in RUN_FILES or out.endswith(".h5"):
+        return "a run's or campaign's own file name; choose another"
+    if os.path.isdir(out):
+        return "is a directory; give a file name"
+    parent = os.path.dirname(os.path.abspath(out))
+    if not os.path.isdir(parent):
+        return f"the folder {parent} does not exist"
+    if os.path.exists(out) and not force and not is_export(out, fmt):
+        return f"exists and is not a {fmt} export; choose another name or pass --force to replace it"
+    return None
+
+
 def main(argv=None):
     import argparse
     import sys
     argv = sys.argv[1:] if argv is None else argv
-    usage = "usage: suspend export RUN_DIR --format extxyz|gsd [--out FILE]"
+    usage = "usage: suspend export RUN_DIR --format extxyz|gsd [--out FILE] [--force]"
     if not argv or argv[0] in ("-h", "--help"):
         print(usage, file=sys.stderr)
         return 2
@@ -90,6 +123,7 @@ def main(argv=None):
     parser.add_argument("run")
     parser.add_argument("--format", required=True, choices=["extxyz", "gsd"])
     parser.add_argument("--out")
+    parser.add_argument("--force", action="store_true")
     args = parser.parse_args(argv)
     from suspend import load_run
     try:
@@ -101,6 +135,10 @@ def main(argv=None):
         print(f"error: export: {run.path} has no snapshots", file=sys.stderr)
         return 2
     out = args.out or os.path.join(os.path.dirname(run.path), "run." + ("xyz" if args.format == "extxyz" else "gsd"))
+    refusal = refuse_out(out, args.format, args.force)
+    if refusal:
+        print(f"error: export: --out {out}: {refusal}", file=sys.stderr)
+        return 2
     tmp = out + ".part"
     try:
         if args.format == "extxyz":

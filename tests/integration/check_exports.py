@@ -16,6 +16,11 @@ suspend_bin, source = sys.argv[1], sys.argv[2]
 sys.path.insert(0, os.path.join(source, "python"))
 import suspend  # noqa: E402
 
+def is_extxyz(path):
+    with open(path) as f:
+        return f.readline().strip().isdigit() and "Lattice=" in f.readline()
+
+
 with tempfile.TemporaryDirectory() as work:
     run_dir = os.path.join(work, "run")
     run_quickstart(suspend_bin, source, run_dir, 0.4, 0.2)
@@ -78,11 +83,35 @@ with tempfile.TemporaryDirectory() as work:
                 contacts_checked += 1
         check(contacts_checked > 0, "some contacts compared")
 
+    # No export overwrites what it did not make: the run's own files never (--force or not), another file only with
+    # --force; an earlier export of the same format is replaced.
+    notes = os.path.join(work, "notes.txt")
+    with open(notes, "w") as f:
+        f.write("my notes\n")
+    own = {name: open(os.path.join(run_dir, name), "rb").read() for name in ("run.h5", "summary.json")}
     for args, fragment in [(["export", run_dir, "--format", "pdb"], "--format"),
-                           (["export", os.path.join(work, "nowhere"), "--format", "gsd"], "not found")]:
+                           (["export", os.path.join(work, "nowhere"), "--format", "gsd"], "not found"),
+                           (["export", run_dir, "--format", "extxyz", "--out", os.path.join(run_dir, "run.h5")],
+                            "own file"),
+                           (["export", run_dir, "--format", "gsd", "--out", os.path.join(run_dir, "summary.json"),
+                             "--force"], "own file"),
+                           (["export", run_dir, "--format", "extxyz", "--out", notes], "--force"),
+                           (["export", run_dir, "--format", "gsd", "--out", xyz], "not a gsd export"),
+                           (["export", run_dir, "--format", "extxyz", "--out", work], "directory"),
+                           (["export", run_dir, "--format", "extxyz", "--out", os.path.join(work, "no", "x.xyz")],
+                            "does not exist")]:
         r = subprocess.run([suspend_bin] + args, capture_output=True, text=True)
         check(r.returncode == 2 and fragment in r.stderr and r.stderr.count("\n") == 1,
               f"{args}: exit {r.returncode}, {r.stderr!r}")
+    for name, content in own.items():
+        check(open(os.path.join(run_dir, name), "rb").read() == content, f"{name} changed by a refused export")
+    check(open(notes).read() == "my notes\n", "notes.txt changed by a refused export")
+    for args in (["--out", xyz], ["--out", notes, "--force"]):
+        r = subprocess.run([suspend_bin, "export", run_dir, "--format", "extxyz"] + args, capture_output=True, text=True)
+        check(r.returncode == 0 and is_extxyz(args[1]), f"export again {args}: exit {r.returncode}, {r.stderr!r}")
+    r = subprocess.run([suspend_bin, "export", run_dir, "--format", "gsd", "--out", gsd_file], capture_output=True,
+                       text=True)
+    check(r.returncode == 0, f"gsd export again: exit {r.returncode}, {r.stderr!r}")
 
 if failures:
     sys.exit(1)
