@@ -139,7 +139,13 @@ int run_case(const Case& c, const RunOptions& o) {
     // checkpoint's strain; into the checkpoint's own folder, its run.h5 continues.
     const bool own_folder = fs::weakly_canonical(fs::absolute(dir)) ==
                             fs::weakly_canonical(fs::absolute(o.restart)).parent_path();
-    branching = !own_folder && !fs::exists(dir / "run.h5");
+    // Never into another run's folder: its record would be cut to the checkpoint's rows.
+    if (!own_folder)
+      for (const char* f : {"run.h5", "checkpoint.h5", "summary.json", "point.json"})
+        if (fs::exists(dir / f))
+          throw InputError("--out: " + dir.string() + " holds another run (" + f + "); continue " + o.restart +
+                           " in its own folder (leave out --out) or into a new one");
+    branching = !own_folder;
     if (!branching && !fs::is_regular_file(dir / "run.h5"))
       throw InputError("--restart: " + join(dir, "run.h5") + " is missing; the checkpoint continues that file (or "
                        "give another --out to continue into a new one)");

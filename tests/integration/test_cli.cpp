@@ -197,6 +197,14 @@ TEST(Cli, RestartIntoANewFolderContinuesTheSameWay) {
   ASSERT_FALSE(strain_d.empty());
   EXPECT_GE(strain_d.front(), 0.1 - 1e-9);  // the new record starts at the checkpoint
   EXPECT_EQ(std::vector<double>(strain_c.end() - static_cast<long>(strain_d.size()), strain_c.end()), strain_d);
+
+  // d is now a finished run of its own: a restart of c may not continue into it (its series would be cut).
+  const std::string d_record = read_text(d + "/run.h5"), d_summary = read_text(d + "/summary.json");
+  expect_input_error(with({"run", restart_case, "--restart", c + "/checkpoint.h5", "--out", d, "--set",
+                           "run.strain=0.3"}),
+                     "holds another run", "");
+  EXPECT_EQ(read_text(d + "/run.h5"), d_record);
+  EXPECT_EQ(read_text(d + "/summary.json"), d_summary);
 }
 
 TEST(Cli, InterruptWritesACheckpointAndStopsCleanly) {
