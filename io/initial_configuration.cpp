@@ -1,10 +1,13 @@
 #include "io/initial_configuration.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <vector>
 
 #include "core/error.hpp"
 #include "io/hdf5.hpp"
@@ -54,13 +57,24 @@ Particles read_particle_table(const std::string& path) {
     const auto hash = line.find('#');
     if (hash != std::string::npos) line.resize(hash);
     std::istringstream s(line);
-    double x, y, z, a;
-    if (!(s >> x)) continue;  // blank or comment line
-    std::string extra;
-    if (!(s >> y >> z >> a) || (s >> extra))
-      throw InputError(path + ":" + std::to_string(number) + ": expected four numbers 'x y z radius'");
-    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z) || !(a > 0.0) || !std::isfinite(a))
-      throw InputError(path + ":" + std::to_string(number) + ": values must be finite and the radius > 0");
+    std::vector<std::string> words;
+    for (std::string w; s >> w;) words.push_back(w);
+    if (words.empty()) continue;  // blank or comment line
+    const std::string where = path + ":" + std::to_string(number) + ": ";
+    if (words.size() != 4)
+      throw InputError(where + "expected four numbers 'x y z radius', found " + std::to_string(words.size()) +
+                       " value(s)");
+    // Every word a whole finite number: a row of text, nan, inf or 1e999 is an error, never a skipped line.
+    double v[4];
+    for (int k = 0; k < 4; ++k) {
+      char* end = nullptr;
+      errno = 0;
+      v[k] = std::strtod(words[k].c_str(), &end);
+      if (end == words[k].c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v[k]))
+        throw InputError(where + "'" + words[k] + "' is not a finite number");
+    }
+    const double x = v[0], y = v[1], z = v[2], a = v[3];
+    if (!(a > 0.0)) throw InputError(where + "the radius must be > 0, not " + words[3]);
     p.position.emplace_back(x, y, z);
     p.radius.push_back(a);
   }

@@ -206,6 +206,17 @@ TEST(Case, ParticleTableFileErrorsNameTheLine) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("bad_table.txt:3"), std::string::npos) << e.what();
   }
+  // A row that is not four finite numbers is an error naming its line, never a skipped line.
+  for (const std::string row : {"nan 1 1 1", "1 inf 1 1", "1e999 1 1 1", "x y z a", "1 2 3", "1 2 3 1 5", "1 2 3 -1",
+                                "1 2 3 1abc"}) {
+    std::ofstream(path) << "1 2 3 1\n\n# comment\n" << row << "  # row 4\n";
+    try {
+      read_particle_table(path);
+      ADD_FAILURE() << "'" << row << "' was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("bad_table.txt:4"), std::string::npos) << row << ": " << e.what();
+    }
+  }
 }
 
 TEST(CaseContact, PaperGroupsBecomeHertzAdhesiveParameters) {
