@@ -145,6 +145,9 @@ InitialConfiguration build_initial_configuration(const Case& c) {
     const bool h5file = f.size() > 3 && (f.ends_with(".h5") || f.ends_with(".hdf5"));
     ic.particles = h5file ? read_particles_h5(f) : read_particle_table(f);
     if (ic.particles.size() < 2) throw InputError("particles.initial.file: " + f + " holds fewer than two particles");
+    if (c.particles.count && *c.particles.count != static_cast<long>(ic.particles.size()))
+      throw InputError("particles.count: " + std::to_string(*c.particles.count) + " disagrees with the " +
+                       std::to_string(ic.particles.size()) + " particles of " + f + "; leave it out or make them agree");
     const double vol = ic.particles.volume();
     ic.box = c.box ? Box(*c.box) : Box(Vec3::Constant(std::cbrt(vol / c.particles.phi)));
     for (Vec3& r : ic.particles.position) ic.box.wrap(r);

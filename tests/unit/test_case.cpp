@@ -219,6 +219,22 @@ TEST(Case, ParticleTableFileErrorsNameTheLine) {
   }
 }
 
+TEST(Case, ParticleCountThatDisagreesWithTheFileIsRefused) {
+  const std::string path = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_two.txt";
+  std::ofstream(path) << "2 2 2 1\n6 6 6 1\n";
+  YAML::Node root = YAML::Load(base);
+  apply_override(root, "particles.initial={from: file, file: " + path + "}");
+  apply_override(root, "particles.count=3");
+  const Case c = parse_case(root, "");
+  try {
+    build_initial_configuration(c);
+    FAIL() << "a count of 3 for a file of 2 particles was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("particles.count: 3 disagrees with the 2 particles"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(CaseContact, PaperGroupsBecomeHertzAdhesiveParameters) {
   YAML::Node root = YAML::Load(base);
   apply_override(root, "contact={law: hertz_adhesive, gamma_bar: 0.5, g_adh: 1.8, mu_s: 0.3}");
