@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -59,15 +60,26 @@ std::string point_name(const std::vector<Assignment>& parameters, const std::vec
   return name.empty() ? "base" : name;
 }
 
+constexpr std::size_t max_points = 20'000;  // listing each point loads its case: 20000 take ~12 s
+
 // The points of one `vary` mapping: the product of its lists, first key outermost.
 void append_product(const YAML::Node& vary, const std::string& where, std::vector<std::vector<Assignment>>& out) {
   if (!vary.IsMap() || vary.size() == 0)
     throw InputError(where + ": must be a mapping of dotted case keys to lists of values, e.g. particles.phi: [0.4, 0.45]");
-  std::vector<std::vector<Assignment>> product = {{}};
+  // Counted before it is built: a product too large to list is refused in no time.
+  double count = 1.0;
   for (const auto& kv : vary) {
     const std::string key = key_of(kv.first, where);
     if (!kv.second.IsSequence() || kv.second.size() == 0)
       throw InputError(where + "." + key + ": must be a non-empty list of values, e.g. [0.40, 0.45]");
+    count *= static_cast<double>(kv.second.size());
+  }
+  if (count + static_cast<double>(out.size()) > static_cast<double>(max_points))
+    throw InputError(where + ": the product of its lists has " + std::to_string(std::llround(std::min(count, 1e18))) +
+                     " points; a campaign holds at most " + std::to_string(max_points) + " (split it into several)");
+  std::vector<std::vector<Assignment>> product = {{}};
+  for (const auto& kv : vary) {
+    const std::string key = key_of(kv.first, where);
     std::vector<std::vector<Assignment>> next;
     for (const auto& partial : product)
       for (const auto& v : kv.second) {
@@ -122,6 +134,7 @@ Campaign load_campaign(const std::string& path) {
     if (vary.IsMap()) {
       append_product(vary, "vary", parameter_sets);
     } else if (vary.IsSequence()) {
+      if (vary.size() == 0) throw InputError("vary: an empty list; give at least one mapping of keys to lists, or leave vary out");
       for (std::size_t i = 0; i < vary.size(); ++i)
         append_product(vary[i], "vary[" + std::to_string(i) + "]", parameter_sets);
     } else {
@@ -140,11 +153,17 @@ Campaign load_campaign(const std::string& path) {
     for (const Assignment& a : ps)
       if (std::find(c.varied_keys.begin(), c.varied_keys.end(), a.key) == c.varied_keys.end())
         c.varied_keys.push_back(a.key);
+  for (const Assignment& a : c.set)
+    if (std::find(c.varied_keys.begin(), c.varied_keys.end(), a.key) != c.varied_keys.end())
+      throw InputError("set." + a.key + ": also varied (vary or points); give each key in one place");
   std::map<std::string, std::size_t> names;
   for (const auto& ps : parameter_sets) {
     Point p{point_name(ps, c.varied_keys), ps, ""};
-    if (!names.emplace(p.name, c.points.size()).second)
-      throw InputError("points: two points are both named '" + p.name + "' (the same parameters given twice)");
+    if (const auto [at, fresh] = names.emplace(p.name, c.points.size()); !fresh)
+      throw InputError("points: two points map to the folder '" + p.name + "' (" +
+                       (c.points[at->second].parameters == ps ? std::string("the same parameters given twice")
+                                                              : std::string("values that differ only in characters a "
+                                                                            "folder name cannot hold")) + ")");
     try {
       p.identity = io::result_identity(io::load_case(c.case_file, c.overrides(p)));
     } catch (const InputError& e) {

@@ -10,6 +10,7 @@ namespace suspend::campaign {
 struct Assignment {
   std::string key;    // dotted case key, e.g. particles.phi
   std::string value;  // YAML text, e.g. 0.45
+  bool operator==(const Assignment&) const = default;
 };
 
 struct Point {

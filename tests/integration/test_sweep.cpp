@@ -158,6 +158,24 @@ TEST(Sweep, ChangedCampaignIsRefusedAddedPointsRun) {
                      "did you mean 'vary'", "");
 }
 
+TEST(Sweep, CampaignFilesMeanExactlyWhatTheySay) {
+  const std::string head = "case: " + restart_case + "\n";
+  auto refused = [&](const std::string& name, const std::string& body, const std::string& fragment) {
+    const auto t0 = std::chrono::steady_clock::now();
+    expect_input_error({"sweep", write_case(name, head + body), "--list"}, fragment, "");
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(10)) << name << " took long to refuse";
+  };
+  refused("same_key.yaml", "set: {particles.phi: 0.4}\nvary: {particles.phi: [0.40, 0.45]}\n",
+          "set.particles.phi: also varied");
+  refused("empty_vary.yaml", "vary: []\n", "vary: an empty list");
+  refused("one_folder.yaml", "points:\n  - {run.seed: 1}\n  - {run.seed: 1}\n", "the same parameters given twice");
+  refused("huge.yaml",
+          "vary: {run.seed: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10], particles.phi: [0.40, 0.41, 0.42, 0.43, 0.44, 0.45, 0.46, "
+          "0.47, 0.48, 0.49], run.strain: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10], contact.mu: [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, "
+          "0.7, 0.8, 0.9, 1.0], run.average_from: [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95]}\n",
+          "has 100000 points; a campaign holds at most 20000");
+}
+
 TEST(Sweep, StoppedFlowEndsJammedAndBudgetEndsFailed) {
   const std::string dir = fresh_dir("sweep_jam");
   // Imposed stress 1 on a suspension of viscosity ~10: with run.jammed.viscosity = 3 its mean rate (~0.1) is below
