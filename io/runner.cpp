@@ -262,7 +262,7 @@ int run_case(const Case& c, const RunOptions& o) {
       SimulationState state;
       OutputClock clock;
       bool valid = false;
-    } this_step, previous_step;
+    } this_step, previous_step, before_clipped_step;
     bool evaluating = false;
     auto remember_step_start = [&] {
       std::swap(previous_step, this_step);
@@ -341,9 +341,15 @@ int run_case(const Case& c, const RunOptions& o) {
           break;
         }
 
-        // The last step ends on run.strain, not past it; a reversal step ends on its strain.
+        // The last step ends on run.strain, not past it; a reversal step ends on its strain. The clipped step is
+        // for the output only: the final checkpoint is the state before it (continued to a longer strain, the run
+        // takes the full step there, as one run straight to that strain does).
         const double pace = flow.progress_rate(sim.shear_rate());
-        if (const double left = c.run.strain - strain; pace * sim.time_step() > left) sim.clip_time_step(left / pace);
+        before_clipped_step.valid = false;
+        if (const double left = c.run.strain - strain; pace * sim.time_step() > left) {
+          sim.clip_time_step(left / pace);
+          before_clipped_step = this_step;
+        }
         if (const double left = flow.next_reversal(sim.state().accumulated_strain) - sim.state().accumulated_strain;
             std::abs(sim.shear_rate()) * sim.time_step() > left)
           sim.clip_time_step(left / std::abs(sim.shear_rate()));
@@ -442,7 +448,13 @@ int run_case(const Case& c, const RunOptions& o) {
     // writes it again; a checkpoint at run.strain always has its summary.json.
     finish_outputs();
     const nlohmann::json summary = write_summary(c.run.average_from, {{"status", "done"}});
-    save();
+    if (before_clipped_step.valid) {
+      file.flush();
+      write_checkpoint(checkpoint_path, {before_clipped_step.state, before_clipped_step.clock, fingerprint,
+                                         serialize(rng), threads});
+    } else {
+      save();
+    }
     file.close();
     if (o.quiet) return 0;
     // JSON has no NaN: an undefined mean or error (too few samples) is null there, nan here.

@@ -246,8 +246,7 @@ TEST(Cli, RestartFromAnotherCaseIsRefused) {
 }
 
 TEST(Cli, QuietPrintsNothingAndTheFinalStateIsASnapshot) {
-  // run.strain 0.3 is not a multiple of snapshot_every 0.25: the final state is a third snapshot all the same
-  // (the last step may still pass run.strain by a fraction of a step).
+  // run.strain 0.3 is not a multiple of snapshot_every 0.25: the final state is a third snapshot all the same.
   const std::string c = fresh_dir("quiet");
   const Result r = run(with_lighter({"run", restart_case, "--out", c, "--quiet", "--set", "run.output.snapshot_every=0.25",
                                      "--set", "run.strain=0.3"}));
@@ -258,8 +257,10 @@ TEST(Cli, QuietPrintsNothingAndTheFinalStateIsASnapshot) {
   ASSERT_TRUE(h5::exists(f.id(), "snapshots/000002"));
   EXPECT_FALSE(h5::exists(f.id(), "snapshots/000003"));
   h5::File cp = h5::File::open(c + "/checkpoint.h5", false);
-  EXPECT_EQ(h5::double_attribute(f.id(), "snapshots/000002", "strain"), h5::double_attribute(cp.id(), ".", "strain"));
-  EXPECT_NEAR(h5::double_attribute(f.id(), "snapshots/000002", "strain"), 0.3, 1e-3);
+  EXPECT_NEAR(h5::double_attribute(f.id(), "snapshots/000002", "strain"), 0.3, 1e-12);
+  // The checkpoint is the state before the last (clipped) step: at most one step before the final snapshot.
+  EXPECT_LE(h5::double_attribute(cp.id(), ".", "strain"), 0.3);
+  EXPECT_GT(h5::double_attribute(cp.id(), ".", "strain"), 0.25);
   const std::string summary = read_text(c + "/summary.json");
   EXPECT_NE(summary.find("\"status\": \"done\""), std::string::npos) << summary;
 }
@@ -328,11 +329,47 @@ TEST(Cli, TheLastStepEndsOnRunStrain) {
                         "run.time_step={mode: fixed, fixed: 0.03}", "--set", "run.strain=0.1", "--set",
                         "run.average_from=0"});
   ASSERT_EQ(r.code, 0) << r.err;
-  h5::File cp = h5::File::open(c + "/checkpoint.h5", false);
-  EXPECT_NEAR(h5::double_attribute(cp.id(), ".", "strain"), 0.1, 1e-12);
-  EXPECT_EQ(h5::int_attribute(cp.id(), ".", "step"), 4);
+  {
+    h5::File f = h5::File::open(c + "/run.h5", false);
+    EXPECT_NEAR(read_series(f.id(), "strain").back(), 0.1, 1e-12);
+    EXPECT_EQ(read_series(f.id(), "strain").size(), 5u);  // strain 0, 0.03, 0.06, 0.09 and 0.1
+    // The clipped step is the output's: the checkpoint is the state before it, so that a continuation takes the
+    // full step there.
+    h5::File cp = h5::File::open(c + "/checkpoint.h5", false);
+    EXPECT_NEAR(h5::double_attribute(cp.id(), ".", "strain"), 0.09, 1e-12);
+    EXPECT_EQ(h5::int_attribute(cp.id(), ".", "step"), 3);
+  }
+  const Result more = run({"run", restart_case, "--restart", c + "/checkpoint.h5", "--quiet", "--set",
+                           "particles.count=50", "--set", "run.time_step={mode: fixed, fixed: 0.03}", "--set",
+                           "run.strain=0.2", "--set", "run.average_from=0"});
+  ASSERT_EQ(more.code, 0) << more.err;
   h5::File f = h5::File::open(c + "/run.h5", false);
-  EXPECT_NEAR(read_series(f.id(), "strain").back(), 0.1, 1e-12);
+  const std::vector<double> strain = read_series(f.id(), "strain");
+  ASSERT_EQ(strain.size(), 8u);  // ... 0.09, 0.12, 0.15, 0.18, 0.2: the row at 0.1 was the first run's ending only
+  EXPECT_NEAR(strain[4], 0.12, 1e-12);
+  EXPECT_NEAR(strain.back(), 0.2, 1e-12);
+}
+
+TEST(Cli, AFinishedRunContinuedIsBitIdenticalToTheStraightRun) {
+  // The adaptive step of the case: one run to strain 0.1 continued to 0.2 against one run straight to 0.2.
+  const std::string a = fresh_dir("continued"), b = fresh_dir("straight");
+  const std::vector<std::string> small = {"--quiet", "--threads", "1", "--set", "particles.count=50", "--set",
+                                          "run.average_from=0.05"};
+  auto with = [&](std::vector<std::string> args) {
+    args.insert(args.end(), small.begin(), small.end());
+    return args;
+  };
+  ASSERT_EQ(run(with({"run", restart_case, "--out", a, "--set", "run.strain=0.1"})).code, 0);
+  ASSERT_EQ(run(with({"run", restart_case, "--restart", a + "/checkpoint.h5", "--set", "run.strain=0.2"})).code, 0);
+  ASSERT_EQ(run(with({"run", restart_case, "--out", b, "--set", "run.strain=0.2"})).code, 0);
+  h5::File ca = h5::File::open(a + "/checkpoint.h5", false), cb = h5::File::open(b + "/checkpoint.h5", false);
+  EXPECT_EQ(h5::int_attribute(ca.id(), ".", "step"), h5::int_attribute(cb.id(), ".", "step"));
+  for (const char* d : {"particles/position", "particles/velocity", "particles/angular_velocity"})
+    EXPECT_EQ(h5::read_doubles(ca.id(), d), h5::read_doubles(cb.id(), d)) << d;
+  h5::File ra = h5::File::open(a + "/run.h5", false), rb = h5::File::open(b + "/run.h5", false);
+  EXPECT_EQ(read_series(ra.id(), "strain"), read_series(rb.id(), "strain"));
+  EXPECT_EQ(read_series(ra.id(), "shear_rate"), read_series(rb.id(), "shear_rate"));
+  EXPECT_EQ(read_series(ra.id(), "eta_r"), read_series(rb.id(), "eta_r"));
 }
 
 // Snapshots list the contacts, and only them: as many rows as the `contacts` series counts at the same step, each
