@@ -43,7 +43,13 @@ void add_phim_command(CLI::App& app) {
     const json table = json::parse(in, nullptr, false);
     if (table.is_discarded() || !table.contains("points"))
       throw InputError("campaign: " + table_file.string() + " is not a campaign table (suspend sweep writes it)");
-    const json result = campaign::fit_phim(table, opt->fit);
+    json result;
+    try {
+      result = campaign::fit_phim(table, opt->fit);
+    } catch (const json::exception& e) {  // a hand-edited or foreign table: name it, not the JSON library
+      throw InputError("campaign: " + table_file.string() + " has a point with a missing or mistyped field (" +
+                       e.what() + ")");
+    }
     const fs::path out = opt->out.empty() ? table_file.parent_path() : fs::path(opt->out);
     fs::create_directories(out.empty() ? fs::path(".") : out);
     io::write_text_atomically((out / "phim.json").string(), result.dump(2) + "\n");

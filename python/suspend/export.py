@@ -128,10 +128,14 @@ def main(argv=None):
     from suspend import load_run
     try:
         run = load_run(args.run)
+        snapshots = run.snapshot_count
     except FileNotFoundError as e:
         print(f"error: export: {e}", file=sys.stderr)
         return 2
-    if run.snapshot_count == 0:
+    except (OSError, KeyError, ValueError) as e:  # truncated HDF5, a checkpoint or foreign file as run.h5
+        print(f"error: export: {args.run} is not a readable run ({str(e).splitlines()[0]})", file=sys.stderr)
+        return 2
+    if snapshots == 0:
         print(f"error: export: {run.path} has no snapshots", file=sys.stderr)
         return 2
     out = args.out or os.path.join(os.path.dirname(run.path), "run." + ("xyz" if args.format == "extxyz" else "gsd"))
@@ -151,6 +155,9 @@ def main(argv=None):
                 return 2
             write_gsd(run, tmp)
         os.replace(tmp, out)  # no half-written file under the final name
+    except (OSError, KeyError, ValueError) as e:  # a snapshot damaged or missing part-way
+        print(f"error: export: cannot write {out} from {run.path} ({str(e).splitlines()[0]})", file=sys.stderr)
+        return 2
     finally:
         if os.path.exists(tmp):
             os.remove(tmp)

@@ -5,6 +5,7 @@ with python3-gsd, as freud and OVITO read it) has the tilt offset / L_y, positio
 and every contact, measured with HOOMD's minimum image in that cell, has the separation run.h5 records. Bad
 arguments exit 2 with one line. Usage: check_exports.py SUSPEND_BINARY SOURCE_DIR"""
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -103,6 +104,18 @@ with tempfile.TemporaryDirectory() as work:
         r = subprocess.run([suspend_bin] + args, capture_output=True, text=True)
         check(r.returncode == 2 and fragment in r.stderr and r.stderr.count("\n") == 1,
               f"{args}: exit {r.returncode}, {r.stderr!r}")
+    # Damaged or foreign run folders: one line, exit 2, never a traceback.
+    for damage in ("truncated", "checkpoint"):
+        broken = os.path.join(work, damage)
+        os.makedirs(broken)
+        if damage == "truncated":
+            with open(os.path.join(broken, "run.h5"), "wb") as f:
+                f.write(own["run.h5"][:len(own["run.h5"]) // 3])
+        else:
+            shutil.copy(os.path.join(run_dir, "checkpoint.h5"), os.path.join(broken, "run.h5"))
+        r = subprocess.run([suspend_bin, "export", broken, "--format", "extxyz"], capture_output=True, text=True)
+        check(r.returncode == 2 and "is not a readable run" in r.stderr and r.stderr.count("\n") == 1,
+              f"export of a {damage} run.h5: exit {r.returncode}, {r.stderr!r}")
     for name, content in own.items():
         check(open(os.path.join(run_dir, name), "rb").read() == content, f"{name} changed by a refused export")
     check(open(notes).read() == "my notes\n", "notes.txt changed by a refused export")

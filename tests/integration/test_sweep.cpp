@@ -168,6 +168,11 @@ TEST(Sweep, CampaignFilesMeanExactlyWhatTheySay) {
   refused("same_key.yaml", "set: {particles.phi: 0.4}\nvary: {particles.phi: [0.40, 0.45]}\n",
           "set.particles.phi: also varied");
   refused("empty_vary.yaml", "vary: []\n", "vary: an empty list");
+  // A hand-edited table: `suspend phim` names the file, not the JSON library's complaint alone.
+  const std::string edited = fresh_dir("edited_table");
+  fs::create_directories(edited);
+  std::ofstream(edited + "/campaign.json") << R"({"points": [{"name": 3}]})";
+  expect_input_error({"phim", edited}, edited + "/campaign.json has a point with a missing or mistyped field", "");
   refused("one_folder.yaml", "points:\n  - {run.seed: 1}\n  - {run.seed: 1}\n", "the same parameters given twice");
   refused("huge.yaml",
           "vary: {run.seed: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10], particles.phi: [0.40, 0.41, 0.42, 0.43, 0.44, 0.45, 0.46, "
