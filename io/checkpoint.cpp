@@ -163,8 +163,13 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     for (double v : {c.state.time, c.state.strain, c.state.accumulated_strain, c.state.last_dt, c.state.shear_rate, c.clock.next_series, c.clock.next_snapshot, c.clock.next_checkpoint,
                      c.clock.jam_window_time, c.clock.jam_window_strain})
       if (!std::isfinite(v)) throw InputError(path + ": time, strain or output clock is not finite");
-    if (h5::exists(id, "checksums/attributes") &&  // absent in checkpoints written before it existed
-        h5::read_ints(id, "checksums/attributes") != std::vector<std::int64_t>{attribute_checksum(c, accumulated)})
+    // Integrity is not optional: a checkpoint whose checksums were removed is refused like a corrupt one (those
+    // written before checksums existed, before 2026-12-03, cannot be continued: run them again).
+    for (const char* sum : {"checksums/attributes", "checksums/content"})
+      if (!h5::exists(id, sum))
+        throw InputError(path + ": checkpoint without its " + sum + " (edited, or older than checksums); it cannot be "
+                         "verified, so it is not continued");
+    if (h5::read_ints(id, "checksums/attributes") != std::vector<std::int64_t>{attribute_checksum(c, accumulated)})
       throw InputError(path + ": corrupt checkpoint (its attributes do not match their checksum)");
     c.fingerprint = fingerprint;
     if (c.state.step < 0 || c.clock.series_rows < 0 || c.clock.snapshots < 0 || c.threads < 1)
@@ -214,8 +219,7 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
         throw InputError(path + ": contact " + std::to_string(k) + " has a non-finite stretch");
       c.state.contacts.push_back(e);
     }
-    if (h5::exists(id, "checksums/content") &&  // absent in checkpoints written before it existed
-        h5::read_ints(id, "checksums/content") != std::vector<std::int64_t>{content_checksum(c.state)})
+    if (h5::read_ints(id, "checksums/content") != std::vector<std::int64_t>{content_checksum(c.state)})
       throw InputError(path + ": corrupt checkpoint (its arrays do not match their checksum)");
   } catch (const InputError&) {
     throw;

@@ -154,6 +154,22 @@ int run_case(const Case& c, const RunOptions& o) {
         throw InputError("--restart: " + o.restart + ": particle " + std::to_string(i) + " is of species " +
                          std::to_string(cp.state.particles.species[i]) + ", the case has " +
                          std::to_string(c.particles.species.size()));
+    // Checksums can be recomputed by hand: the particles themselves must be the case's (count, radii, species).
+    {
+      const bool random = c.particles.initial == "random";
+      const InitialConfiguration from_file = random ? InitialConfiguration{} : build_initial_configuration(c);
+      const std::vector<double>& radius = random ? composition.radius : from_file.particles.radius;
+      const Particles& q = cp.state.particles;
+      if (q.size() != radius.size())
+        throw InputError("--restart: " + o.restart + " holds " + std::to_string(q.size()) + " particles, the case " +
+                         std::to_string(radius.size()));
+      for (std::size_t i = 0; i < q.size(); ++i)
+        if (q.radius[i] != radius[i] || (random && q.species[i] != composition.species[i]))
+          throw InputError("--restart: " + o.restart + ": particle " + std::to_string(i) + " has radius " +
+                           exact(q.radius[i]) + " (species " + std::to_string(q.species[i]) + "), the case " +
+                           exact(radius[i]) + (random ? " (species " + std::to_string(composition.species[i]) + ")"
+                                                      : std::string()));
+    }
     state = std::move(cp.state);
     clock = cp.clock;
     if (branching) clock.series_rows = clock.snapshots = 0;

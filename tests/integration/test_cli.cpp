@@ -18,6 +18,8 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "io/case.hpp"
+#include "io/checkpoint.hpp"
 #include "io/hdf5.hpp"
 #include "io/run_file.hpp"
 #include "tests/integration/cli_support.hpp"
@@ -280,6 +282,23 @@ TEST(Cli, ThreadsBeyondTheCoresAreCappedWithAWarning) {
                                      "run.strain=0.02", "--set", "run.average_from=0.01"}));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("warning: 4096 threads asked for"), std::string::npos) << r.err;
+}
+
+TEST(Cli, ACheckpointEditedWithItsChecksumsRecomputedIsRefused) {
+  // Checksums can be recomputed (write_checkpoint does): the particles themselves are checked against the case.
+  const std::string c = fresh_dir("edited_checkpoint");
+  const std::vector<std::string> small = {"--quiet", "--threads", "1", "--set", "particles.count=50", "--set",
+                                          "run.average_from=0.01"};
+  std::vector<std::string> args = {"run", restart_case, "--out", c, "--set", "run.strain=0.02"};
+  args.insert(args.end(), small.begin(), small.end());
+  ASSERT_EQ(run(args).code, 0);
+  const Case the_case = load_case(restart_case, {"particles.count=50", "run.average_from=0.01", "run.strain=0.02"});
+  Checkpoint cp = read_checkpoint(c + "/checkpoint.h5", physics_fingerprint(the_case));
+  cp.state.particles.radius[7] *= 1.01;
+  write_checkpoint(c + "/checkpoint.h5", cp);
+  std::vector<std::string> again = {"run", restart_case, "--restart", c + "/checkpoint.h5", "--set", "run.strain=0.04"};
+  again.insert(again.end(), small.begin(), small.end());
+  expect_input_error(again, "particle 7 has radius", "");
 }
 
 TEST(Cli, CrossvalRefusesAFolderOfAnotherCase) {

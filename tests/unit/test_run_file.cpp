@@ -13,6 +13,7 @@
 #include "core/rng.hpp"
 #include "io/case.hpp"
 #include "io/checkpoint.hpp"
+#include "io/hdf5.hpp"
 #include "io/run_file.hpp"
 #include "io/xdmf.hpp"
 
@@ -192,6 +193,25 @@ TEST(Checkpoint, RefusesOtherCaseCorruptFileAndNaN) {
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("position of particle 1 is not finite"), std::string::npos) << e.what();
+  }
+}
+
+// Integrity is not optional: with either checksum removed (an edit that also drops the evidence) the checkpoint is
+// refused, not continued unverified.
+TEST(Checkpoint, WithoutItsChecksumsIsRefused) {
+  for (const char* sum : {"checksums/content", "checksums/attributes"}) {
+    const std::string path = temp("no_checksum.h5");
+    write_checkpoint(path, small_checkpoint(3, "case A"));
+    {
+      h5::File f = h5::File::open(path, true);
+      ASSERT_GE(H5Ldelete(f.id(), sum, H5P_DEFAULT), 0);
+    }
+    try {
+      read_checkpoint(path, "case A");
+      ADD_FAILURE() << "a checkpoint without " << sum << " was read";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("without its ") + sum), std::string::npos) << e.what();
+    }
   }
 }
 
