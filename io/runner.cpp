@@ -90,7 +90,7 @@ Snapshot snapshot_of(const Simulation& sim) {
 }
 }  // namespace
 
-std::string restart_command(const Case& c, const std::string& checkpoint) {
+std::string restart_command(const Case& c, const std::string& checkpoint, int threads) {
   // Single quotes keep YAML values ({from: file, ...}, 'text') intact in a POSIX shell.
   auto quoted = [](const std::string& a) {
     if (a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._/=+-") == std::string::npos)
@@ -101,7 +101,8 @@ std::string restart_command(const Case& c, const std::string& checkpoint) {
   };
   std::string command = "suspend run " + quoted(c.source);
   for (const std::string& o : c.overrides) command += " --set " + quoted(o);
-  return command + " --restart " + quoted(checkpoint);
+  // The thread count too: the continuation is bit-identical only on the same number of threads.
+  return command + " --restart " + quoted(checkpoint) + " --threads " + std::to_string(threads);
 }
 
 void install_stop_handlers() {
@@ -400,7 +401,7 @@ int run_case(const Case& c, const RunOptions& o) {
           progress.finish();
           write_partial_summary("stopped", {});
           std::cerr << "stopped by signal " << sig << " at strain " << progress_of()
-                    << "; continue with: " << restart_command(c, checkpoint_path) << "\n";
+                    << "; continue with: " << restart_command(c, checkpoint_path, threads) << "\n";
           return 128 + sig;
         }
         if (jam_test) {
@@ -426,7 +427,7 @@ int run_case(const Case& c, const RunOptions& o) {
             progress.finish();
             std::cerr << "error: " << *full << "; stopped at the checkpoint of strain " << progress_of()
                       << " while everything is complete; once there is room, continue with: "
-                      << restart_command(c, checkpoint_path) << "\n";
+                      << restart_command(c, checkpoint_path, threads) << "\n";
             return exit_output_error;
           }
         }
@@ -438,7 +439,7 @@ int run_case(const Case& c, const RunOptions& o) {
       std::cerr << "error: " << e.what() << "\n";
       if (checkpoint_strain >= 0.0)
         std::cerr << "the last complete checkpoint (strain " << checkpoint_strain << ") is kept in " << checkpoint_path
-                  << "; once there is room, continue with: " << restart_command(c, checkpoint_path)
+                  << "; once there is room, continue with: " << restart_command(c, checkpoint_path, threads)
                   << " (should run.h5 be damaged beyond repair, add --out NEW_DIR)\n";
       else
         std::cerr << "no checkpoint was written yet; once there is room, remove the incomplete " << run_path

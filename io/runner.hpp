@@ -17,8 +17,9 @@ struct RunOptions {
 // Returns the process exit code: 0 done, 3 numerical failure (state saved), 128 + signal when stopped by a signal.
 int run_case(const Case& c, const RunOptions& options);
 
-// The command that continues a run from its checkpoint: the case file and its --set overrides, shell-quoted.
-std::string restart_command(const Case& c, const std::string& checkpoint);
+// The command that continues a run from its checkpoint exactly: the case file, its --set overrides (shell-quoted)
+// and the thread count the run used.
+std::string restart_command(const Case& c, const std::string& checkpoint, int threads);
 
 // Installs SIGINT/SIGTERM handlers that ask the running case to checkpoint and stop.
 void install_stop_handlers();

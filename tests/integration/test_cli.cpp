@@ -227,14 +227,15 @@ TEST(Cli, InterruptWritesACheckpointAndStopsCleanly) {
   EXPECT_TRUE(fs::exists(c + "/run.xdmf"));
   // What it did is summarised, marked as stopped.
   EXPECT_NE(read_text(c + "/summary.json").find("\"status\": \"stopped\""), std::string::npos);
-  // The printed command continues the run as it is: with its --set overrides.
+  // The printed command continues the run as it is: with its --set overrides and its thread count.
   const std::string said = s.str();
   const auto at = said.find("continue with: suspend ");
   ASSERT_NE(at, std::string::npos) << said;
   const std::string command = said.substr(at + std::string("continue with: suspend ").size());
   EXPECT_NE(command.find("--set run.average_from=0.1"), std::string::npos) << command;
+  EXPECT_NE(command.find(" --threads 1"), std::string::npos) << command;
   const int continued = std::system((suspend_bin + " " + command.substr(0, command.find('\n')) +
-                                     " --threads 1 --quiet > /dev/null 2>&1").c_str());
+                                     " --quiet > /dev/null 2>&1").c_str());
   EXPECT_EQ(continued, 0) << command;
   EXPECT_NE(read_text(c + "/summary.json").find("\"status\": \"done\""), std::string::npos);
   EXPECT_TRUE(fs::exists(c + "/summary.json"));
