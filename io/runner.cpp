@@ -156,9 +156,9 @@ int run_case(const Case& c, const RunOptions& o) {
                          std::to_string(cp.state.particles.species[i]) + ", the case has " +
                          std::to_string(c.particles.species.size()));
     // Checksums can be recomputed by hand: the particles themselves must be the case's (count, radii, species).
+    const bool random = c.particles.initial == "random";
+    const InitialConfiguration from_file = random ? InitialConfiguration{} : build_initial_configuration(c);
     {
-      const bool random = c.particles.initial == "random";
-      const InitialConfiguration from_file = random ? InitialConfiguration{} : build_initial_configuration(c);
       const std::vector<double>& radius = random ? composition.radius : from_file.particles.radius;
       const Particles& q = cp.state.particles;
       if (q.size() != radius.size())
@@ -175,7 +175,7 @@ int run_case(const Case& c, const RunOptions& o) {
     clock = cp.clock;
     if (branching) clock.series_rows = clock.snapshots = 0;
     rng = deserialize_rng(cp.rng);
-    box = c.particles.initial == "random" ? composition.box : build_initial_configuration(c).box;
+    box = random ? composition.box : from_file.box;
     if (cp.threads != threads)
       std::cerr << "warning: the checkpoint was written with " << cp.threads << " threads and this run uses "
                 << threads << "; the continuation is exact only on the same thread count\n";
@@ -279,7 +279,8 @@ int run_case(const Case& c, const RunOptions& o) {
       SimulationState state;
       OutputClock clock;
       bool valid = false;
-    } this_step, previous_step, before_clipped_step;
+    } this_step, previous_step;
+    bool last_step_clipped = false;  // then previous_step, at the end, is the state before that step
     bool evaluating = false;
     auto remember_step_start = [&] {
       std::swap(previous_step, this_step);
@@ -288,6 +289,11 @@ int run_case(const Case& c, const RunOptions& o) {
       this_step.clock.series_rows = static_cast<std::int64_t>(file.series_rows());
       this_step.clock.snapshots = static_cast<std::int64_t>(file.snapshot_count());
       this_step.valid = true;
+    };
+    // The checkpoint of a step's start (the output clock as it was then: continued, the step is taken again).
+    auto save_step_start = [&](const StepStart& s) {
+      file.flush();
+      write_checkpoint(checkpoint_path, {s.state, s.clock, fingerprint, serialize(rng), threads});
     };
 
     auto wall0 = std::chrono::steady_clock::now();
@@ -362,10 +368,10 @@ int run_case(const Case& c, const RunOptions& o) {
         // for the output only: the final checkpoint is the state before it (continued to a longer strain, the run
         // takes the full step there, as one run straight to that strain does).
         const double pace = flow.progress_rate(sim.shear_rate());
-        before_clipped_step.valid = false;
+        last_step_clipped = false;
         if (const double left = c.run.strain - strain; pace * sim.time_step() > left) {
           sim.clip_time_step(left / pace);
-          before_clipped_step = this_step;
+          last_step_clipped = true;
         }
         if (const double left = flow.next_reversal(sim.state().accumulated_strain) - sim.state().accumulated_strain;
             std::abs(sim.shear_rate()) * sim.time_step() > left)
@@ -450,8 +456,7 @@ int run_case(const Case& c, const RunOptions& o) {
       // evaluate() found the state it was given bad: the step that made it is the failing one.
       const StepStart& good = evaluating && previous_step.valid ? previous_step : this_step;
       file.write_snapshot(snapshot_of(sim));
-      file.flush();
-      write_checkpoint(checkpoint_path, {good.state, good.clock, fingerprint, serialize(rng), threads});
+      save_step_start(good);
       finish_outputs();
       write_partial_summary("failed", {{"error", e.what()}});
       std::cerr << "error: " << e.what() << "\nthe state before the failing step (strain "
@@ -465,13 +470,10 @@ int run_case(const Case& c, const RunOptions& o) {
     // writes it again; a checkpoint at run.strain always has its summary.json.
     finish_outputs();
     const nlohmann::json summary = write_summary(c.run.average_from, {{"status", "done"}});
-    if (before_clipped_step.valid) {
-      file.flush();
-      write_checkpoint(checkpoint_path, {before_clipped_step.state, before_clipped_step.clock, fingerprint,
-                                         serialize(rng), threads});
-    } else {
+    if (last_step_clipped)
+      save_step_start(previous_step);
+    else
       save();
-    }
     file.close();
     if (o.quiet) return 0;
     // JSON has no NaN: an undefined mean or error (too few samples) is null there, nan here.

@@ -39,9 +39,15 @@ constexpr double kill_strain = 0.1;
 const std::vector<std::string> lighter = {"--set", "particles.count=50", "--set", "run.strain=0.2"};
 constexpr double kill_strain = 0.05;
 #endif
-std::vector<std::string> with_lighter(std::vector<std::string> args) {
-  args.insert(args.end(), lighter.begin(), lighter.end());
+std::vector<std::string> plus(std::vector<std::string> args, const std::vector<std::string>& more) {
+  args.insert(args.end(), more.begin(), more.end());
   return args;
+}
+std::vector<std::string> with_lighter(std::vector<std::string> args) { return plus(std::move(args), lighter); }
+// A short restart-case run of 50 spheres on one thread, for the tests that run it several times.
+std::vector<std::string> small(std::vector<std::string> args, const std::string& average_from) {
+  return plus(std::move(args), {"--threads", "1", "--quiet", "--set", "particles.count=50", "--set",
+                                "run.average_from=" + average_from});
 }
 
 }  // namespace
@@ -176,12 +182,7 @@ TEST(Cli, KilledAndRestartedRunEndsBitIdentical) {
 // run.h5 starts at the checkpoint, the old folder is left alone (the way on after a full disk damaged run.h5).
 TEST(Cli, RestartIntoANewFolderContinuesTheSameWay) {
   const std::string c = fresh_dir("branch_c"), d = fresh_dir("branch_d");
-  const std::vector<std::string> small = {"--threads", "1", "--quiet", "--set", "particles.count=50", "--set",
-                                          "run.average_from=0.05"};
-  auto with = [&](std::vector<std::string> args) {
-    args.insert(args.end(), small.begin(), small.end());
-    return args;
-  };
+  auto with = [](std::vector<std::string> args) { return small(std::move(args), "0.05"); };
   ASSERT_EQ(run(with({"run", restart_case, "--out", c, "--set", "run.strain=0.1"})).code, 0);
   const std::size_t rows_before = [&] {
     h5::File f = h5::File::open(c + "/run.h5", false);
@@ -288,18 +289,13 @@ TEST(Cli, ThreadsBeyondTheCoresAreCappedWithAWarning) {
 TEST(Cli, ACheckpointEditedWithItsChecksumsRecomputedIsRefused) {
   // Checksums can be recomputed (write_checkpoint does): the particles themselves are checked against the case.
   const std::string c = fresh_dir("edited_checkpoint");
-  const std::vector<std::string> small = {"--quiet", "--threads", "1", "--set", "particles.count=50", "--set",
-                                          "run.average_from=0.01"};
-  std::vector<std::string> args = {"run", restart_case, "--out", c, "--set", "run.strain=0.02"};
-  args.insert(args.end(), small.begin(), small.end());
-  ASSERT_EQ(run(args).code, 0);
+  ASSERT_EQ(run(small({"run", restart_case, "--out", c, "--set", "run.strain=0.02"}, "0.01")).code, 0);
   const Case the_case = load_case(restart_case, {"particles.count=50", "run.average_from=0.01", "run.strain=0.02"});
   Checkpoint cp = read_checkpoint(c + "/checkpoint.h5", physics_fingerprint(the_case));
   cp.state.particles.radius[7] *= 1.01;
   write_checkpoint(c + "/checkpoint.h5", cp);
-  std::vector<std::string> again = {"run", restart_case, "--restart", c + "/checkpoint.h5", "--set", "run.strain=0.04"};
-  again.insert(again.end(), small.begin(), small.end());
-  expect_input_error(again, "particle 7 has radius", "");
+  expect_input_error(small({"run", restart_case, "--restart", c + "/checkpoint.h5", "--set", "run.strain=0.04"}, "0.01"),
+                     "particle 7 has radius", "");
 }
 
 TEST(Cli, CrossvalRefusesAFolderOfAnotherCase) {
@@ -373,12 +369,7 @@ TEST(Cli, TheLastStepEndsOnRunStrain) {
 TEST(Cli, AFinishedRunContinuedIsBitIdenticalToTheStraightRun) {
   // The adaptive step of the case: one run to strain 0.1 continued to 0.2 against one run straight to 0.2.
   const std::string a = fresh_dir("continued"), b = fresh_dir("straight");
-  const std::vector<std::string> small = {"--quiet", "--threads", "1", "--set", "particles.count=50", "--set",
-                                          "run.average_from=0.05"};
-  auto with = [&](std::vector<std::string> args) {
-    args.insert(args.end(), small.begin(), small.end());
-    return args;
-  };
+  auto with = [](std::vector<std::string> args) { return small(std::move(args), "0.05"); };
   ASSERT_EQ(run(with({"run", restart_case, "--out", a, "--set", "run.strain=0.1"})).code, 0);
   ASSERT_EQ(run(with({"run", restart_case, "--restart", a + "/checkpoint.h5", "--set", "run.strain=0.2"})).code, 0);
   ASSERT_EQ(run(with({"run", restart_case, "--out", b, "--set", "run.strain=0.2"})).code, 0);

@@ -34,6 +34,18 @@ std::string error_of(const std::string& yaml, const std::vector<std::string>& ov
   }
   return "";
 }
+
+// The error the initial configuration of `base` with these overrides stops at ("" when it builds).
+std::string configuration_error_of(const std::vector<std::string>& overrides) {
+  YAML::Node root = YAML::Load(base);
+  for (const auto& o : overrides) apply_override(root, o);
+  try {
+    build_initial_configuration(parse_case(root, ""));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
 }  // namespace
 
 TEST(Case, ValidCaseFillsDefaults) {
@@ -185,16 +197,8 @@ TEST(Case, RecordedFcmCasesMeanTheirFormerDefaults) {
 
 TEST(Case, UnreachableVolumeFractionForTheBox) {
   // 0.72 is below the schema bound but far above random close packing: the generator must refuse it.
-  YAML::Node root = YAML::Load(base);
-  apply_override(root, "particles.phi=0.72");
-  apply_override(root, "particles.count=40");
-  const Case c = parse_case(root, "");
-  try {
-    build_initial_configuration(c);
-    FAIL() << "phi = 0.72 must be unreachable";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("unreachable"), std::string::npos) << e.what();
-  }
+  const std::string e = configuration_error_of({"particles.phi=0.72", "particles.count=40"});
+  EXPECT_NE(e.find("unreachable"), std::string::npos) << "phi = 0.72 must be unreachable: " << e;
 }
 
 TEST(Case, ParticleTableFileErrorsNameTheLine) {
@@ -222,17 +226,9 @@ TEST(Case, ParticleTableFileErrorsNameTheLine) {
 TEST(Case, ParticleCountThatDisagreesWithTheFileIsRefused) {
   const std::string path = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_two.txt";
   std::ofstream(path) << "2 2 2 1\n6 6 6 1\n";
-  YAML::Node root = YAML::Load(base);
-  apply_override(root, "particles.initial={from: file, file: " + path + "}");
-  apply_override(root, "particles.count=3");
-  const Case c = parse_case(root, "");
-  try {
-    build_initial_configuration(c);
-    FAIL() << "a count of 3 for a file of 2 particles was accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("particles.count: 3 disagrees with the 2 particles"), std::string::npos)
-        << e.what();
-  }
+  const std::string e = configuration_error_of({"particles.initial={from: file, file: " + path + "}", "particles.count=3"});
+  EXPECT_NE(e.find("particles.count: 3 disagrees with the 2 particles"), std::string::npos)
+      << "a count of 3 for a file of 2 particles: " << e;
 }
 
 TEST(CaseContact, PaperGroupsBecomeHertzAdhesiveParameters) {
