@@ -11,7 +11,12 @@ double wrap_centered(double x, double length) {
   return w;
 }
 
-void Box::set_strain(double strain) { set_shear_offset(strain * length_.y()); }
+void Box::set_strain(double strain) { set_shear_offset(origin_ + strain * length_.y()); }
+
+void Box::set_offset_origin(double offset) {
+  origin_ = wrap_centered(offset, length_.x());
+  offset_ = origin_;
+}
 
 void Box::set_shear_offset(double offset) { offset_ = wrap_centered(offset, length_.x()); }
 

@@ -1,7 +1,8 @@
 // Periodic box with Lees-Edwards boundaries (paper 000, eq. 16; DESIGN.md section 3).
 // Flow x, gradient y, vorticity z. The periodic image of the cell at y + L_y is displaced by +shear_offset in x,
-// where shear_offset = strain * L_y wrapped into [-L_x/2, L_x/2). Only the wrapped offset matters for geometry,
-// so the strain may grow without bound.
+// where shear_offset = origin + strain * L_y wrapped into [-L_x/2, L_x/2). Only the wrapped offset matters for
+// geometry, so the strain may grow without bound. The origin is the offset at strain 0: zero for a generated packing,
+// the snapshot's offset for a run that starts from a sheared state.
 #pragma once
 #include <cmath>
 
@@ -26,6 +27,9 @@ class Box {
 
   // Sets the offset from the accumulated strain; works for any strain history (stress control, oscillation).
   void set_strain(double strain);
+  // The offset at strain 0 (kept by set_strain); also sets the offset to it.
+  void set_offset_origin(double offset);
+  double offset_origin() const { return origin_; }
   // Sets the offset directly (wrapped into [-L_x/2, L_x/2)).
   void set_shear_offset(double offset);
 
@@ -48,6 +52,7 @@ class Box {
  private:
   Vec3 length_{1.0, 1.0, 1.0};
   double offset_ = 0.0;
+  double origin_ = 0.0;
 };
 
 // Wraps x into [-L/2, L/2).

@@ -144,7 +144,7 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   }
   if (c.box && c.particles.count)
     throw InputError("particles.count and box are both given; give one of them (the other follows from phi)");
-  if (!c.box && !c.particles.count)
+  if (!c.box && !c.particles.count && c.particles.initial != "file")
     throw InputError("particles.count: missing; give particles.count or box (the other follows from phi)");
 
   std::optional<double> sigma_star;  // flow.sigma_star, resolved into shear_stress once the contact law is known

@@ -14,6 +14,8 @@
 #include "io/memory_estimate.hpp"
 #include "io/schema_reader.hpp"
 
+#include <yaml-cpp/yaml.h>
+
 namespace suspend::io {
 
 Composition composition_of(const Case& c) {
@@ -86,7 +88,7 @@ Particles read_particle_table(const std::string& path) {
   return p;
 }
 
-Particles read_particles_h5(const std::string& path) {
+StoredParticles read_particles_h5(const std::string& path) {
   try {
     h5::File f = h5::File::open(path, false);
     std::string group;
@@ -103,19 +105,50 @@ Particles read_particles_h5(const std::string& path) {
     if (group.empty()) throw InputError(path + ": holds neither a checkpoint nor a snapshot to start from");
     std::vector<hsize_t> shape;
     const std::vector<double> pos = h5::read_doubles(f.id(), group + "/position", &shape);
-    Particles p;
-    p.radius = h5::read_doubles(f.id(), group + "/radius");
-    const std::size_t n = p.radius.size();
+    StoredParticles out;
+    Particles& p = out.particles;
+    const std::vector<double> radius = h5::read_doubles(f.id(), group + "/radius");
+    const std::size_t n = radius.size();
     if (shape.size() != 2 || shape[0] != n || shape[1] != 3)
       throw InputError(path + ": " + group + "/position does not match the radius count");
     p.resize(n);
-    p.radius = h5::read_doubles(f.id(), group + "/radius");
+    p.radius = radius;
+    if (h5::exists(f.id(), group + "/species")) {
+      const std::vector<std::int64_t> species = h5::read_ints(f.id(), group + "/species");
+      if (species.size() != n) throw InputError(path + ": " + group + "/species does not match the radius count");
+      for (std::size_t i = 0; i < n; ++i) {
+        if (species[i] < 0 || species[i] > 1000)
+          throw InputError(path + ": particle " + std::to_string(i) + " has species " + std::to_string(species[i]));
+        p.species[i] = static_cast<int>(species[i]);
+      }
+    }
     for (std::size_t i = 0; i < n; ++i) {
       p.position[i] = Vec3(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]);
       if (!p.position[i].allFinite() || !(p.radius[i] > 0.0))
         throw InputError(path + ": particle " + std::to_string(i) + " has a non-finite position or bad radius");
     }
-    return p;
+    auto finite = [&](double v, const std::string& what) {
+      if (!std::isfinite(v)) throw InputError(path + ": " + what + " is not finite");
+      return v;
+    };
+    if (group == "particles") {
+      out.strain = finite(h5::double_attribute(f.id(), ".", "strain"), "the checkpoint's strain");
+      return out;
+    }
+    const std::vector<double> box = h5::read_doubles(f.id(), group + "/box");
+    if (box.size() != 3 || !(box[0] > 0.0 && box[1] > 0.0 && box[2] > 0.0) ||
+        !std::isfinite(box[0] * box[1] * box[2]))
+      throw InputError(path + ": " + group + "/box is not three positive lengths");
+    out.box = Vec3(box[0], box[1], box[2]);
+    out.shear_offset = finite(h5::double_attribute(f.id(), group, "shear_offset"), group + " shear_offset");
+    if (h5::has_attribute(f.id(), ".", "case")) {
+      const YAML::Node run_case = YAML::Load(h5::string_attribute(f.id(), ".", "case"));
+      if (run_case["particles"] && run_case["particles"]["phi"])
+        out.requested_phi = run_case["particles"]["phi"].as<double>();
+    }
+    return out;
+  } catch (const YAML::Exception& e) {
+    throw InputError("particles.initial.file: " + path + ": its case attribute is not readable (" + e.what() + ")");
   } catch (const std::runtime_error& e) {
     if (dynamic_cast<const InputError*>(&e)) throw;
     throw InputError(std::string("particles.initial.file: ") + e.what());
@@ -143,20 +176,43 @@ InitialConfiguration build_initial_configuration(const Case& c) {
   } else {
     const std::string& f = c.particles.initial_file;
     const bool h5file = f.size() > 3 && (f.ends_with(".h5") || f.ends_with(".hdf5"));
-    ic.particles = h5file ? read_particles_h5(f) : read_particle_table(f);
+    StoredParticles stored;
+    if (h5file) stored = read_particles_h5(f);
+    else stored.particles = read_particle_table(f);
+    ic.particles = std::move(stored.particles);
     if (ic.particles.size() < 2) throw InputError("particles.initial.file: " + f + " holds fewer than two particles");
     if (c.particles.count && *c.particles.count != static_cast<long>(ic.particles.size()))
       throw InputError("particles.count: " + std::to_string(*c.particles.count) + " disagrees with the " +
                        std::to_string(ic.particles.size()) + " particles of " + f + "; leave it out or make them agree");
     const double vol = ic.particles.volume();
-    ic.box = c.box ? Box(*c.box) : Box(Vec3::Constant(std::cbrt(vol / c.particles.phi)));
+    if (stored.box) {
+      // A snapshot: its own box, so its phi (a given box must be the same one).
+      if (c.box && (*c.box - *stored.box).norm() > 1e-12 * stored.box->norm())
+        throw InputError("box: differs from the box of the snapshot in " + f + "; leave box out to use the snapshot's");
+      ic.box = Box(*stored.box);
+    } else {
+      ic.box = c.box ? Box(*c.box) : Box(Vec3::Constant(std::cbrt(vol / c.particles.phi)));
+    }
+    // Lees-Edwards: the sheared state goes on from its own offset, so its images (and contacts) stay where they were.
+    if (stored.shear_offset) ic.box.set_offset_origin(*stored.shear_offset);
+    else if (stored.strain) ic.box.set_offset_origin(*stored.strain * ic.box.length().y());
     for (Vec3& r : ic.particles.position) ic.box.wrap(r);
     ic.origin = "loaded " + std::to_string(ic.particles.size()) + " particles from " + f;
+    if (stored.box) {
+      std::ostringstream o;
+      o << " (its box and Lees-Edwards offset " << ic.box.offset_origin() << ")";
+      ic.origin += o.str();
+    }
+    ic.phi = ic.particles.volume() / ic.box.volume();
+    // The phi the snapshot's run asked for names the same state as the phi it reached.
+    const bool requested = stored.requested_phi && std::abs(*stored.requested_phi - c.particles.phi) < 1e-12;
+    if (!requested && std::abs(ic.phi - c.particles.phi) > 1e-3)
+      throw InputError("particles.phi = " + exact(c.particles.phi) + " does not match the file's particles in this box (phi = " +
+                       exact(ic.phi) + (stored.requested_phi ? ", asked for as " + exact(*stored.requested_phi) : std::string()) +
+                       "); set particles.phi to the file's value" + (stored.box ? "" : " or give the matching box"));
+    return ic;
   }
   ic.phi = ic.particles.volume() / ic.box.volume();
-  if (c.particles.initial == "file" && std::abs(ic.phi - c.particles.phi) > 1e-3)
-    throw InputError("particles.phi = " + exact(c.particles.phi) + " does not match the file's particles in this box (phi = " +
-                     exact(ic.phi) + "); set particles.phi to the file's value or give the matching box");
   return ic;
 }
 

@@ -105,9 +105,10 @@ std::string restart_command(const Case& c, const std::string& checkpoint, int th
   return command + " --restart " + quoted(checkpoint) + " --threads " + std::to_string(threads);
 }
 
+// Ctrl-C, kill, a closed terminal (SIGHUP) and a closed pipe for the progress lines (`suspend run ... | head`,
+// SIGPIPE) all stop the run at a checkpoint; left at their defaults, the last two killed it with run.h5 open.
 void install_stop_handlers() {
-  std::signal(SIGINT, on_stop_signal);
-  std::signal(SIGTERM, on_stop_signal);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) std::signal(sig, on_stop_signal);
 }
 
 int run_case(const Case& c, const RunOptions& o) {
@@ -132,7 +133,7 @@ int run_case(const Case& c, const RunOptions& o) {
   OutputClock clock;
   Rng rng(static_cast<std::uint64_t>(c.run.seed));
   std::string origin;
-  const Composition composition = composition_of(c);
+  const Composition composition = c.particles.initial == "random" ? composition_of(c) : Composition{};
   if (restarting) {
     if (!fs::is_regular_file(o.restart)) throw InputError("--restart: '" + o.restart + "' does not exist");
     Checkpoint cp = read_checkpoint(o.restart, fingerprint);

@@ -155,7 +155,12 @@ void SchemaReader::finish() const {
   std::vector<std::string> allowed(asked_.begin(), asked_.end());
   for (const auto& kv : node_) {
     const std::string key = kv.first.as<std::string>();
-    if (asked_.count(key) || kv.second.IsNull()) continue;  // `key: null` (--set key=null) is the key left out
+    if (asked_.count(key)) continue;
+    // `{from:file}` in YAML is the key "from:file" with no value: a colon without its space, never a key left out.
+    if (const auto colon = key.find(':'); colon != std::string::npos)
+      throw InputError(key_path(key) + ": not a key; write '" + key.substr(0, colon) + ": " + key.substr(colon + 1) +
+                       "' (YAML needs a space after the colon)");
+    if (kv.second.IsNull()) continue;  // `key: null` (--set key=null) is the key left out
     throw InputError(key_path(key) + ": unknown key" + suggestion(closest_word(key, allowed)) +
                      " (allowed here: " + join_words(allowed) + ")");
   }

@@ -100,6 +100,9 @@ TEST(Cli, BadInputExitsWithTwoAndWritesNothing) {
   expect_input_error({"run", restart_case, "--out", out, "--set", "flow.shear_rate=1e-12", "--set",
                       "run.time_step={mode: fixed, fixed: 1e-3}"},
                      "at flow.shear_rate = 1e-12, a step advances the strain by at most 1e-15", out);
+  // A flow mapping without the space after a colon is keys without values, never the default silently taken.
+  expect_input_error({"run", restart_case, "--out", out, "--set", "particles.initial={from:file, file: x.h5}"},
+                     "particles.initial.from:file: not a key; write 'from: file'", out);
   const std::string file = write_case("a_file", "");
   expect_input_error({"run", restart_case, "--out", file + "/run"}, "--out: cannot create the directory", "");
   expect_input_error({"run", restart_case, "--out", out, "--set", "hydrodynamics.model=fcm", "--set",
@@ -381,6 +384,42 @@ TEST(Cli, AFinishedRunContinuedIsBitIdenticalToTheStraightRun) {
   EXPECT_EQ(read_series(ra.id(), "strain"), read_series(rb.id(), "strain"));
   EXPECT_EQ(read_series(ra.id(), "shear_rate"), read_series(rb.id(), "shear_rate"));
   EXPECT_EQ(read_series(ra.id(), "eta_r"), read_series(rb.id(), "eta_r"));
+}
+
+// A run started from another run's last snapshot starts where that one ended (issue 37, item 7): in its box, at its
+// Lees-Edwards offset, so with the same contacts, and at the phi its run asked for, which the reached one differs
+// from (2fbb67f dropped the offset, so contacts across the sheared face were lost or became overlaps, and refused the
+// asked-for phi). A phi that is neither is refused.
+TEST(Cli, AShearedSnapshotStartsWhereItsRunEnded) {
+  const std::string a = fresh_dir("sheared"), b = fresh_dir("from_sheared"), c = fresh_dir("other_phi");
+  ASSERT_EQ(run({"run", restart_case, "--threads", "1", "--quiet", "--set", "particles.count=null", "--set",
+                 "box={cube: 7}", "--set", "run.strain=0.3", "--set", "run.average_from=0", "--out", a})
+                .code,
+            0);
+  const std::vector<std::string> from = {"--threads", "1", "--quiet", "--set", "particles.count=null", "--set",
+                                         "particles.initial={from: file, file: " + a + "/run.h5}", "--set",
+                                         "run.strain=0.05", "--set", "run.average_from=0"};
+  const Result r = run(plus({"run", restart_case, "--out", b}, from));
+  ASSERT_EQ(r.code, 0) << r.err;
+  h5::File fa = h5::File::open(a + "/run.h5", false), fb = h5::File::open(b + "/run.h5", false);
+  auto snapshot = [](const h5::File& f, bool last) {
+    std::size_t k = 0;
+    while (last && h5::exists(f.id(), "snapshots/" + std::string(6 - std::to_string(k + 1).size(), '0') +
+                                          std::to_string(k + 1)))
+      ++k;
+    return "snapshots/" + std::string(6 - std::to_string(k).size(), '0') + std::to_string(k);
+  };
+  const std::string end = snapshot(fa, true), start = snapshot(fb, false);
+  ASSERT_NE(end, "snapshots/000000");
+  EXPECT_NE(h5::double_attribute(fa.id(), end, "shear_offset"), 0.0);
+  EXPECT_EQ(h5::double_attribute(fb.id(), start, "shear_offset"), h5::double_attribute(fa.id(), end, "shear_offset"));
+  EXPECT_EQ(h5::read_doubles(fb.id(), start + "/box"), h5::read_doubles(fa.id(), end + "/box"));
+  EXPECT_EQ(h5::read_doubles(fb.id(), start + "/position"), h5::read_doubles(fa.id(), end + "/position"));
+  const auto contacts = h5::shape_of(fa.id(), end + "/contact_pairs")[0];
+  EXPECT_GT(contacts, 0u);
+  EXPECT_EQ(h5::shape_of(fb.id(), start + "/contact_pairs")[0], contacts);
+  expect_input_error(plus({"run", restart_case, "--out", c, "--set", "particles.phi=0.5"}, from),
+                     "particles.phi = 0.5 does not match", c);
 }
 
 // Snapshots list the contacts, and only them: as many rows as the `contacts` series counts at the same step, each
