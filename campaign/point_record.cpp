@@ -1,9 +1,5 @@
 #include "campaign/point_record.hpp"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -33,21 +29,11 @@ void write_record(const fs::path& point_dir, const PointRecord& r) {
   io::write_text_atomically((point_dir / "point.json").string(), j.dump(2) + "\n");
 }
 
-PointLock::PointLock(const fs::path& point_dir) {
-  fd_ = ::open((point_dir / ".lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
-  if (fd_ >= 0 && ::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-    ::close(fd_);
-    fd_ = -1;
-  }
-}
-
-PointLock::~PointLock() {
-  if (fd_ >= 0) ::close(fd_);  // closing the last descriptor releases the flock
-}
+io::FolderLock lock_point(const fs::path& point_dir) { return io::FolderLock(point_dir / ".lock", "suspend sweep"); }
 
 bool locked_elsewhere(const fs::path& point_dir) {
   if (!fs::exists(point_dir / ".lock")) return false;
-  return !PointLock(point_dir).held();
+  return !lock_point(point_dir).held();
 }
 
 }  // namespace suspend::campaign

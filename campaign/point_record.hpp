@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include "io/folder_lock.hpp"
+
 namespace suspend::campaign {
 
 // done: ran to run.strain; jammed: an imposed-stress run that stopped flowing (its summary averages what it did);
@@ -21,25 +23,9 @@ struct PointRecord {
 PointRecord read_record(const std::filesystem::path& point_dir);
 void write_record(const std::filesystem::path& point_dir, const PointRecord& r);
 
-// An exclusive lock on a point, held while a process runs it (flock on DIR/points/NAME/.lock, released when the
-// process dies, even by SIGKILL). A sweep skips points locked by another process.
-class PointLock {
- public:
-  explicit PointLock(const std::filesystem::path& point_dir);  // tries once, never waits
-  ~PointLock();
-  PointLock(const PointLock&) = delete;
-  PointLock& operator=(const PointLock&) = delete;
-  PointLock(PointLock&& o) noexcept : fd_(o.fd_) { o.fd_ = -1; }
-  PointLock& operator=(PointLock&& o) noexcept {
-    std::swap(fd_, o.fd_);
-    return *this;
-  }
-  bool held() const { return fd_ >= 0; }
-  int fd() const { return fd_; }
-
- private:
-  int fd_ = -1;
-};
+// An exclusive lock on a point, held while a process runs it (DIR/points/NAME/.lock, see io/folder_lock.hpp).
+// A sweep skips points locked by another process; the run it starts inherits the lock.
+io::FolderLock lock_point(const std::filesystem::path& point_dir);
 
 // Whether another process holds the point's lock now.
 bool locked_elsewhere(const std::filesystem::path& point_dir);

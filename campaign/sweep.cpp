@@ -65,11 +65,27 @@ fs::file_time_type checkpoint_time(const fs::path& point_dir) {
   return ec ? fs::file_time_type::min() : t;
 }
 
+// A run that ended (summary.json says done or jammed) while its record still says otherwise: the sweep was killed
+// between the run's end and the record. Records it as it ended instead of running it again.
+bool recover_ended_run(const fs::path& point_dir, PointRecord& r) {
+  std::ifstream in(point_dir / "summary.json");
+  if (!in) return false;
+  const nlohmann::json s = nlohmann::json::parse(in, nullptr, false);
+  if (s.is_discarded() || !s.is_object() || !s.contains("status") || !s["status"].is_string()) return false;
+  const std::string status = s["status"];
+  if (status != "done" && status != "jammed") return false;
+  r.status = status;
+  r.exit_code = status == "done" ? 0 : exit_jammed;
+  r.message = status == "jammed" ? last_reason(point_dir / "log.txt") : std::string();
+  write_record(point_dir, r);
+  return true;
+}
+
 struct Job {
   pid_t pid = -1;
   const Point* point = nullptr;
   Clock::time_point start;
-  PointLock lock;
+  io::FolderLock lock;
   PointRecord record;
   bool over_budget = false;
   fs::file_time_type checkpointed = fs::file_time_type::min();  // last checkpoint its record's wall time covers
@@ -145,13 +161,23 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
   auto start = [&](const Point* p) {
     const fs::path pd = point_dir(o.out_dir, *p);
     fs::create_directories(pd);
-    PointLock lock(pd);
+    io::FolderLock lock = lock_point(pd);
     if (!lock.held()) {
       ++busy_elsewhere;
-      say(p->name + " is being run by another process; skipped");
+      say(p->name + " is being run by " + lock.holder() + "; skipped");
       return;
     }
+    // Read again under the lock: another sweep on this folder may have finished the point since the list was made.
     PointRecord r = read_record(pd);
+    if (r.status == "done" || r.status == "jammed" || (r.status == "failed" && !o.retry_failed)) {
+      say(p->name + " was ended by another process (" + r.status + "); skipped");
+      return;
+    }
+    if (recover_ended_run(pd, r)) {
+      say(r.status + " " + p->name + " (its run had ended before its record; recorded now)" + eta_text(pd));
+      write_table(c, o.out_dir);
+      return;
+    }
     std::vector<std::string> args = {exe, "run", c.case_file};
     for (const std::string& s : c.overrides(*p)) args.insert(args.end(), {"--set", s});
     args.insert(args.end(), {"--threads", std::to_string(o.threads)});

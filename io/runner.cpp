@@ -18,6 +18,7 @@
 #include "dem/integrate/time_step_control.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
+#include "io/folder_lock.hpp"
 #include "io/exact_tables.hpp"
 #include "io/initial_configuration.hpp"
 #include "io/output_room.hpp"
@@ -134,6 +135,17 @@ int run_case(const Case& c, const RunOptions& o) {
   Rng rng(static_cast<std::uint64_t>(c.run.seed));
   std::string origin;
   const Composition composition = c.particles.initial == "random" ? composition_of(c) : Composition{};
+  // One process per run folder (io/folder_lock.hpp): a folder that holds a run is locked before anything in it is
+  // read, so that a second process is refused instead of continuing from a checkpoint the first is replacing. A new
+  // folder is locked once created, below.
+  FolderLock lock;
+  auto lock_folder = [&] {
+    lock = FolderLock(dir / ".run.lock", "suspend run");
+    if (!lock.held())
+      throw InputError("--out: " + dir.string() + " is in use by " + lock.holder() +
+                       "; wait for it to end or give another directory");
+  };
+  if (fs::is_regular_file(dir / "run.h5") || fs::is_regular_file(dir / "checkpoint.h5")) lock_folder();
   if (restarting) {
     if (!fs::is_regular_file(o.restart)) throw InputError("--restart: '" + o.restart + "' does not exist");
     Checkpoint cp = read_checkpoint(o.restart, fingerprint);
@@ -208,6 +220,13 @@ int run_case(const Case& c, const RunOptions& o) {
       if (ec || !fs::is_directory(dir))
         throw InputError("--out: cannot create the directory '" + dir.string() + "'" +
                          (ec ? " (" + ec.message() + ")" : "") + "; give a writable folder");
+    }
+    if (!lock.held()) {
+      lock_folder();
+      // Another process may have started a run here since the checks above.
+      if ((!restarting || branching) && fs::exists(dir / "run.h5"))
+        throw InputError("--out: " + dir.string() + " already holds a run (started by another process meanwhile); "
+                         "continue it with --restart " + join(dir, "checkpoint.h5") + " or choose another directory");
     }
     remove_stale_temporaries(dir.string());
     const std::string run_path = join(dir, "run.h5"), checkpoint_path = join(dir, "checkpoint.h5");

@@ -17,6 +17,8 @@
 #include <sstream>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "core/error.hpp"
 #include "io/case.hpp"
 #include "io/checkpoint.hpp"
@@ -108,6 +110,30 @@ TEST(Cli, BadInputExitsWithTwoAndWritesNothing) {
   expect_input_error({"run", restart_case, "--out", out, "--set", "hydrodynamics.model=fcm", "--set",
                       "hydrodynamics.fcm.cache_dir=" + file + "/cache"},
                      "hydrodynamics.fcm.cache_dir: cannot create the directory", out);
+}
+
+// Two runs into one folder (issue 37, item 2), with HDF5's own file locking off as on many clusters: the second is
+// refused with exit 2 naming the process that holds the folder, and the first ends as if alone (2fbb67f: the second
+// crashed with an HDF5 error, or both wrote and the folder mixed two runs).
+TEST(Cli, TwoRunsIntoOneFolderTheSecondIsRefused) {
+  setenv("HDF5_USE_FILE_LOCKING", "FALSE", 1);
+  const std::string a = fresh_dir("one_folder"), alone = fresh_dir("alone");
+  const std::vector<std::string> args = {"run", restart_case, "--threads", "1", "--quiet", "--set", "run.strain=0.3"};
+  const pid_t first = spawn(plus(args, {"--out", a}), a + ".err");
+  while (!fs::exists(a + "/run.h5")) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  const Result second = run(plus(args, {"--out", a}));
+  const Result restart = run(plus(args, {"--restart", a + "/checkpoint.h5", "--set", "run.strain=1"}));
+  ASSERT_EQ(wait_exit(first), 0) << read_text(a + ".err");
+  EXPECT_EQ(second.code, 2);
+  EXPECT_NE(second.err.find("is in use by process " + std::to_string(first)), std::string::npos) << second.err;
+  EXPECT_EQ(restart.code, 2) << restart.err;
+  ASSERT_EQ(run(plus(args, {"--out", alone})).code, 0);
+  nlohmann::json sa = nlohmann::json::parse(read_text(a + "/summary.json")),
+                 sb = nlohmann::json::parse(read_text(alone + "/summary.json"));
+  sa.erase("wall_seconds");
+  sb.erase("wall_seconds");
+  EXPECT_EQ(sa, sb);
+  unsetenv("HDF5_USE_FILE_LOCKING");
 }
 
 TEST(Cli, CheckPrintsTheResolvedCaseWithDerivedValues) {

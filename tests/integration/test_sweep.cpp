@@ -120,6 +120,33 @@ TEST(Sweep, SameTableWithJobsAfterSigkillAndPointByPoint) {
   EXPECT_EQ(table(c), ta);
 }
 
+// Two sweeps on one folder at once (issue 37, item 2): each point runs once, by whichever took its lock first; the
+// other skips it, also when it reaches the point after the first has finished it (2fbb67f started such a point
+// again, which then failed for good). A record lost to a SIGKILL between a point's end and its record is rebuilt
+// from the run's summary, not run again. Both give the table of one clean sweep.
+TEST(Sweep, TwoSweepsOnOneFolderRunEachPointOnce) {
+  const std::string file = campaign("together.yaml");
+  const std::string clean = fresh_dir("sweep_clean"), shared = fresh_dir("sweep_shared");
+  ASSERT_EQ(run({"sweep", file, "--out", clean, "--jobs", "2", "--quiet"}).code, 0);
+  const pid_t first = spawn({"sweep", file, "--out", shared, "--jobs", "1", "--quiet"}, shared + ".1.err");
+  const pid_t second = spawn({"sweep", file, "--out", shared, "--jobs", "1", "--quiet"}, shared + ".2.err");
+  EXPECT_EQ(wait_exit(first), 0) << read_text(shared + ".1.err");
+  EXPECT_EQ(wait_exit(second), 0) << read_text(shared + ".2.err");
+  EXPECT_EQ(table(shared), table(clean));
+  for (const char* p : {"phi0.40", "phi0.45", "phi0.5_mu0.5"})
+    EXPECT_EQ(json::parse(read_text(shared + "/points/" + p + "/point.json"))["runs"], 1) << p;
+
+  const std::string record = shared + "/points/phi0.45/point.json";
+  json lost = json::parse(read_text(record));
+  lost["status"] = "running";
+  lost["exit_code"] = -1;
+  std::ofstream(record) << lost.dump(2);
+  const Result again = run({"sweep", file, "--out", shared, "--quiet"});
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_EQ(table(shared), table(clean));
+  EXPECT_EQ(json::parse(read_text(record))["runs"], 1) << "the ended point was run again";
+}
+
 TEST(Sweep, ChangedCampaignIsRefusedAddedPointsRun) {
   const std::string dir = fresh_dir("sweep_changed");
   ASSERT_EQ(run({"sweep", campaign("c1.yaml"), "--out", dir, "--quiet"}).code, 0);
