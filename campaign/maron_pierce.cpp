@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 
@@ -73,9 +74,19 @@ std::optional<MaronPierceFit> fit_maron_pierce(const std::vector<ViscosityPoint>
     return std::nullopt;
   };
   if (points.size() < 3) return fail(std::to_string(points.size()) + " flowing point(s); a fit needs at least 3");
+  // Degenerate data are reported, never fitted: a zero or infinite error would weigh a point infinitely or not at
+  // all, and a viscosity <= 0 or phi outside (0, 1) is no suspension.
   for (const ViscosityPoint& q : points) {
-    if (!(q.sem > 0.0) || !std::isfinite(q.eta) || !(q.phi > 0.0) || !(q.phi < 1.0))
-      return fail("a point has no positive standard error or no finite viscosity (phi = " + std::to_string(q.phi) + ")");
+    auto number = [](double v) {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.6g", v);
+      return std::string(b);
+    };
+    const std::string at = " (phi = " + number(q.phi) + ", eta_r = " + number(q.eta) + " +- " + number(q.sem) + ")";
+    if (!(q.phi > 0.0) || !(q.phi < 1.0)) return fail("not fitted: a point has phi outside (0, 1)" + at);
+    if (!std::isfinite(q.eta) || !(q.eta > 0.0)) return fail("not fitted: a point has no finite positive eta_r" + at);
+    if (!std::isfinite(q.sem) || !(q.sem > 0.0))
+      return fail("not fitted: a point has no finite positive standard error" + at);
   }
   const Best b = best_fit(points);
   MaronPierceFit f;

@@ -1,5 +1,6 @@
 #include "io/snapshot_reader.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "core/error.hpp"
@@ -11,6 +12,12 @@ namespace suspend::io {
 std::size_t snapshot_count(hid_t run_file) {
   std::size_t k = 0;
   while (h5::exists(run_file, snapshot_group(k))) ++k;
+  // Numbered from 0 without gaps: a group missing in the middle is damage, not the end of the run.
+  H5G_info_t info{};
+  if (h5::exists(run_file, "snapshots") && H5Gget_info_by_name(run_file, "snapshots", &info, H5P_DEFAULT) >= 0 &&
+      info.nlinks != k)
+    throw InputError(snapshot_group(k) + " is missing, yet /snapshots holds " + std::to_string(info.nlinks) +
+                     " entries: the file is damaged (snapshots are numbered from 000000 without gaps)");
   return k;
 }
 
@@ -24,8 +31,13 @@ analysis::Configuration read_configuration(hid_t run_file, std::size_t index) {
   c.time = h5::double_attribute(run_file, g, "time");
   c.strain = h5::double_attribute(run_file, g, "strain");
   const std::vector<double> box = h5::read_doubles(run_file, g + "/box");
-  c.box = Box(box.at(0), box.at(1), box.at(2));
-  c.box.set_shear_offset(h5::double_attribute(run_file, g, "shear_offset"));
+  if (box.size() != 3 || !(box[0] > 0.0 && box[1] > 0.0 && box[2] > 0.0) || !std::isfinite(box[0] * box[1] * box[2]))
+    throw InputError(g + "/box: not three positive finite lengths");
+  c.box = Box(box[0], box[1], box[2]);
+  const double offset = h5::double_attribute(run_file, g, "shear_offset");
+  if (!std::isfinite(offset) || !std::isfinite(c.time) || !std::isfinite(c.strain))
+    throw InputError(g + ": its time, strain or shear_offset is not finite");
+  c.box.set_shear_offset(offset);
   const std::vector<double> position = h5::read_doubles(run_file, g + "/position");
   c.radius = h5::read_doubles(run_file, g + "/radius");
   const std::vector<std::int64_t> species = h5::read_ints(run_file, g + "/species");
@@ -33,7 +45,11 @@ analysis::Configuration read_configuration(hid_t run_file, std::size_t index) {
   if (position.size() != 3 * n || species.size() != n)
     throw InputError(g + ": position, radius and species differ in length");
   c.position.resize(n);
-  for (std::size_t i = 0; i < n; ++i) c.position[i] = Vec3(position[3 * i], position[3 * i + 1], position[3 * i + 2]);
+  for (std::size_t i = 0; i < n; ++i) {
+    c.position[i] = Vec3(position[3 * i], position[3 * i + 1], position[3 * i + 2]);
+    if (!c.position[i].allFinite() || !(c.radius[i] > 0.0) || !std::isfinite(c.radius[i]))
+      throw InputError(g + ": particle " + std::to_string(i) + " has a non-finite position or a bad radius");
+  }
   c.species.assign(species.begin(), species.end());
 
   const std::vector<std::int64_t> pairs = h5::read_ints(run_file, g + "/contact_pairs");

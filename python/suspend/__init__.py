@@ -45,6 +45,10 @@ class Run:
                 self.stress[name] = np.asarray(item)
                 self.units["stress/" + name] = _text(item.attrs.get("units", f["series/stress"].attrs.get("units", "")))
             self.snapshot_count = len(f["snapshots"]) if "snapshots" in f else 0
+            for k in range(self.snapshot_count):  # numbered from 000000 without gaps, as the run writes them
+                if f"{k:06d}" not in f["snapshots"]:
+                    raise ValueError(f"snapshots/{k:06d} is missing, yet /snapshots holds {self.snapshot_count} "
+                                     "entries: the file is damaged")
         summary = os.path.join(os.path.dirname(self.path), "summary.json")
         self.summary = json.load(open(summary)) if os.path.isfile(summary) else None
 

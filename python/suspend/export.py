@@ -51,8 +51,12 @@ def write_gsd(run, out):
     import gsd
     import gsd.hoomd
     import numpy as np
+    import warnings
     mode = "wb" if int(gsd.__version__.split(".")[0]) < 3 else "w"
-    with gsd.hoomd.open(name=out, mode=mode) as trajectory:
+    # gsd compares a frame's type names with its numeric defaults, which numpy answers with a FutureWarning on
+    # every export; the comparison's result is right, so the warning is only noise on stderr.
+    with warnings.catch_warnings(), gsd.hoomd.open(name=out, mode=mode) as trajectory:
+        warnings.filterwarnings("ignore", category=FutureWarning, module="numpy")
         for s in run.snapshots():
             lx, ly, lz, offset = _cell(s)
             frame = gsd.hoomd.Frame() if hasattr(gsd.hoomd, "Frame") else gsd.hoomd.Snapshot()
@@ -76,6 +80,40 @@ def write_gsd(run, out):
             frame.log["value/time"] = np.array([float(s["time"])])
             frame.log["value/shear_offset"] = np.array([offset])
             trajectory.append(frame)
+
+
+def check_snapshot(s):
+    """Raises ValueError naming what is wrong with a snapshot (dict of Run.snapshot) that an export would write."""
+    import numpy as np
+    where = f"snapshots/{s['index']:06d}"
+
+    def numbers(name, shape, positive=False, integer=False):
+        if name not in s:
+            raise ValueError(f"{where}/{name} is missing")
+        a = np.asarray(s[name])
+        if a.dtype.kind not in ("iu" if integer else "fiu") or a.shape != shape:
+            raise ValueError(f"{where}/{name}: expected {'integers' if integer else 'numbers'} of shape {shape}, "
+                             f"found {a.dtype} of shape {a.shape}")
+        if not np.isfinite(a).all() or (positive and not (a > 0).all()) or (integer and (a < 0).any()):
+            raise ValueError(f"{where}/{name}: holds a non-finite, negative or zero value")
+        return a
+
+    n = len(np.atleast_1d(s.get("radius", [])))
+    numbers("radius", (n,), positive=True)
+    numbers("box", (3,), positive=True)
+    numbers("shear_offset", ())
+    for name in ("strain", "time"):
+        numbers(name, ())
+    numbers("step", (), integer=True)
+    for name in ("position", "velocity", "angular_velocity"):
+        numbers(name, (n, 3))
+    species = numbers("species", (n,), integer=True)
+    if "contact_pairs" in s:
+        pairs = np.asarray(s["contact_pairs"])
+        if pairs.size and (pairs.dtype.kind not in "iu" or pairs.ndim != 2 or pairs.shape[1] != 2
+                           or pairs.min() < 0 or pairs.max() >= n):
+            raise ValueError(f"{where}/contact_pairs: not pairs of particle indices below {n}")
+    return species
 
 
 # What a run or a campaign folder holds: never an export's target, --force or not.
@@ -137,6 +175,16 @@ def main(argv=None):
         return 2
     if snapshots == 0:
         print(f"error: export: {run.path} has no snapshots", file=sys.stderr)
+        return 2
+    # Every snapshot checked before anything is written: a damaged one is named, not half-exported.
+    try:
+        for s in run.snapshots():
+            species = check_snapshot(s)
+            if args.format == "extxyz" and species.max(initial=0) >= len(SYMBOLS):
+                raise ValueError(f"snapshots/{s['index']:06d} has {int(species.max()) + 1} species; extended XYZ "
+                                 f"writes at most {len(SYMBOLS)} (as element symbols); use --format gsd")
+    except (OSError, KeyError, ValueError, TypeError) as e:
+        print(f"error: export: {run.path}: {str(e).splitlines()[0]}", file=sys.stderr)
         return 2
     out = args.out or os.path.join(os.path.dirname(run.path), "run." + ("xyz" if args.format == "extxyz" else "gsd"))
     refusal = refuse_out(out, args.format, args.force)

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "campaign/maron_pierce.hpp"
@@ -61,6 +62,24 @@ TEST(MaronPierce, TooFewPointsAreSaidNotFitted) {
   EXPECT_NE(why.find("at least 3"), std::string::npos) << why;
   EXPECT_FALSE(fit_maron_pierce({{0.4, 5, 0.1}, {0.45, 8, 0.0}, {0.5, 20, 1}}, &why));
   EXPECT_NE(why.find("standard error"), std::string::npos) << why;
+}
+
+// Degenerate data (issue 37, item 3) are reported with the point, never fitted: 2fbb67f fitted infinite errors (all
+// weights zero), negative viscosities and phi > 1 into numbers.
+TEST(MaronPierce, DegenerateDataAreReportedNotFitted) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<std::pair<std::vector<ViscosityPoint>, std::string>> cases = {
+      {{{0.4, 5, inf}, {0.45, 8, inf}, {0.5, 20, inf}}, "finite positive standard error (phi = 0.4"},
+      {{{0.4, 5, 0.0}, {0.45, 8, 0.0}, {0.5, 20, 0.0}}, "finite positive standard error (phi = 0.4"},
+      {{{0.4, 5, 0.1}, {0.45, -8, 0.2}, {0.5, 20, 1}}, "no finite positive eta_r (phi = 0.45, eta_r = -8"},
+      {{{0.4, 5, 0.1}, {0.45, 8, 0.2}, {1.2, 20, 1}}, "phi outside (0, 1) (phi = 1.2"},
+  };
+  for (const auto& [points, fragment] : cases) {
+    std::string why;
+    EXPECT_FALSE(fit_maron_pierce(points, &why, 20)) << fragment;
+    EXPECT_NE(why.find(fragment), std::string::npos) << why;
+    EXPECT_EQ(why.rfind("not fitted", 0), 0u) << why;
+  }
 }
 
 TEST(Phim, GroupsByMuAndSigmaStarFlagsJammedPointsAndInterpolatesRateControl) {
