@@ -45,6 +45,14 @@ Composition composition_of(const Case& c) {
     if (k.radius.size() < 2)
       throw InputError("box: too small to hold two particles at particles.phi = " + exact(c.particles.phi));
   }
+  // A requested species that gets no sphere would run another suspension than the case says (a size ratio of 4 in
+  // a (6 a_1)^3 box gave 12 small spheres at phi 0.23 for 0.45 requested).
+  for (std::size_t s = 0; s < k.counts.size(); ++s)
+    if (sp[s].volume_share > 0.0 && k.counts[s] == 0)
+      throw InputError(std::string(c.particles.count ? "particles.count" : "box") + ": no sphere of species " +
+                       std::to_string(s) + " (radius " + exact(sp[s].radius) + ", volume share " +
+                       exact(sp[s].volume_share) + ") fits the " + std::to_string(k.radius.size()) +
+                       " spheres at particles.phi = " + exact(c.particles.phi) + "; give more particles or a larger box");
   for (std::size_t s = 0; s < k.counts.size(); ++s) k.species.insert(k.species.end(), k.counts[s], static_cast<int>(s));
   k.phi = volume_fraction(k.radius, k.box.volume());
   return k;

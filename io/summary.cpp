@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "analysis/contact_network.hpp"
+#include "core/error.hpp"
 #include "core/stress.hpp"
 #include "io/run_file.hpp"
 #include "io/oscillatory_response.hpp"
@@ -54,7 +55,12 @@ nlohmann::json microstructure(hid_t f, double from, const char* strain_attribute
     const double strain = h5::has_attribute(f, g, strain_attribute) ? h5::double_attribute(f, g, strain_attribute)
                                                                      : h5::double_attribute(f, g, "strain");
     if (strain < from) continue;
-    const analysis::Configuration c = read_configuration(f, k);
+    analysis::Configuration c;
+    try {
+      c = read_configuration(f, k);
+    } catch (const InputError&) {
+      continue;  // the failing state a failed run keeps as its last snapshot (non-finite by design): no average's
+    }
     if (c.size() == 0) continue;
     const analysis::ContactNumbers z = analysis::contact_numbers(c);
     const analysis::ClusterStatistics cl = analysis::clusters(c);

@@ -82,6 +82,7 @@ inline void expect_input_error(const std::vector<std::string>& args, const std::
   EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
   EXPECT_NE(r.err.find(fragment), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "") << "nothing may be printed on bad input";
   if (!out.empty()) {
     EXPECT_FALSE(fs::exists(out)) << "nothing may be written to --out on bad input";
   }

@@ -102,6 +102,13 @@ TEST(Cli, BadInputExitsWithTwoAndWritesNothing) {
   expect_input_error({"run", restart_case, "--out", out, "--set", "flow.shear_rate=1e-12", "--set",
                       "run.time_step={mode: fixed, fixed: 1e-3}"},
                      "at flow.shear_rate = 1e-12, a step advances the strain by at most 1e-15", out);
+  // A species that gets no sphere is refused, not dropped (2fbb67f ran 12 small spheres at phi 0.23 here).
+  expect_input_error({"run", restart_case, "--out", out, "--set", "particles.count=null", "--set", "box={cube: 6}",
+                      "--set", "particles.bidisperse.size_ratio=4"},
+                     "box: no sphere of species 1 (radius 4, volume share 0.5) fits", out);
+  expect_input_error({"check", restart_case, "--set", "particles.count=null", "--set", "box={cube: 6}", "--set",
+                      "particles.bidisperse.size_ratio=4"},
+                     "box: no sphere of species 1", "");
   // A flow mapping without the space after a colon is keys without values, never the default silently taken.
   expect_input_error({"run", restart_case, "--out", out, "--set", "particles.initial={from:file, file: x.h5}"},
                      "particles.initial.from:file: not a key; write 'from: file'", out);
