@@ -101,7 +101,10 @@ void refuse_runs_without_progress(const Case& c) {
     for (const Species& sp : c.particles.species) a_min = std::min(a_min, sp.radius);
     const double bound = explicit_contact_time_step(ts, s.contact, a_min);
     step = std::min(ts.max, rate * bound);
-    why = "explicit contacts of stiffness " + exact(stiffness_scale(s.contact)) + " (contact.*) limit a step to " +
+    const std::string keys = std::visit(
+        [](const auto& l) { return std::string(std::decay_t<decltype(l.contact.normal)>::stiffness_keys); }, s.contact);
+    why = "explicit contacts of stiffness " + exact(stiffness_scale(s.contact)) + " (set by " + keys +
+          ") limit a step to " +
           exact(bound) + " time units (run.time_step.stability x 6 pi a_min / stiffness) at " + rate_key + " = " +
           exact(rate);
   } else {

@@ -41,7 +41,7 @@ struct ContactModel {
 
   void validate() const {
     normal.validate();
-    friction.validate();
+    friction.validate(Normal::friction_key);  // the key the case names it by (mu or mu_s)
     rolling.validate();
   }
   double range() const { return normal.range(); }

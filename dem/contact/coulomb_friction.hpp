@@ -19,7 +19,9 @@ struct CoulombFrictionParams {
 struct CoulombFriction {
   static constexpr std::string_view name = "coulomb";
   CoulombFrictionParams p;
-  void validate() const { require(p.mu, Range::non_negative(), "contact.mu"); }
+  void validate(std::string_view mu_key = "mu") const {
+    require(p.mu, Range::non_negative(), "contact." + std::string(mu_key));
+  }
   // Largest tangential force the contact can carry under a signed load (positive = repulsive).
   double limit(double load) const { return p.mu * std::abs(load); }
   double coefficient() const { return p.mu; }

@@ -21,8 +21,8 @@ struct CriticalLoadFrictionParams {
 struct CriticalLoadFriction {
   static constexpr std::string_view name = "critical_load";
   CriticalLoadFrictionParams p;
-  void validate() const {
-    require(p.mu, Range::non_negative(), "contact.mu");
+  void validate(std::string_view mu_key = "mu") const {
+    require(p.mu, Range::non_negative(), "contact." + std::string(mu_key));
     require(p.critical_load, Range::non_negative(), "contact.critical_load");
   }
   double limit(double load) const { return load > p.critical_load ? p.mu * (load - p.critical_load) : 0.0; }

@@ -55,8 +55,9 @@ struct HertzAdhesiveParams {
   void validate() const {
     require(roughness, Range::positive(), "contact.roughness");
     require(eps_bar, Range::positive(), "contact.eps_bar");
-    require(kn, Range::positive(), "contact.kn");
-    require(f_adh, Range::non_negative(), "contact.f_adh");
+    // k_n and F_adh are what gamma_bar (with eps_bar, roughness) and g_adh set (paper 004 eq. 17).
+    require(kn, Range::positive(), "contact.gamma_bar (through the Hertz stiffness k_n it sets)");
+    require(f_adh, Range::non_negative(), "contact.g_adh (through the adhesion force 6 pi g_adh)");
     require(repulsion_stiffness, Range::non_negative(), "contact.repulsion_stiffness");
     require(repulsion_onset, Range::closed(0.0, 1.0), "contact.repulsion_onset");
   }
@@ -83,6 +84,8 @@ class HertzAdhesive {
   static constexpr std::string_view name = "hertz_adhesive";
   static constexpr std::string_view documentation = "docs/contact.md, section 'Hertz + constant adhesion at roughness height'";
   static constexpr std::string_view friction_key = "mu_s";
+  static constexpr std::string_view stiffness_keys =
+      "contact.gamma_bar, eps_bar, roughness and repulsion_stiffness";
   static constexpr std::string_view default_friction = "coulomb";
   static constexpr double default_mu = 0.5;  // paper 004's mu_s
 

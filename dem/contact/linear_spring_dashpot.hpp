@@ -28,13 +28,14 @@ struct LinearSpringDashpot {
   static constexpr std::string_view name = "linear_spring";
   static constexpr std::string_view documentation = "docs/contact.md, section 'Linear spring-dashpot + Coulomb stick/slide'";
   static constexpr std::string_view friction_key = "mu";
+  static constexpr std::string_view stiffness_keys = "contact.k_hat";
   static constexpr std::string_view default_friction = "coulomb";
   static constexpr double default_mu = 1.0;  // paper 000 table 1 (frictional case)
 
   LinearSpringParams p;
 
   void validate() const {
-    require(p.kn, Range::positive(), "contact.kn");
+    require(p.kn, Range::positive(), "contact.k_hat");
     require(p.kt, Range::positive(), "contact.kt");
     require(p.gamma_n, Range::non_negative(), "contact.gamma_n");
   }

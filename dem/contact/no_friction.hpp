@@ -8,7 +8,7 @@ namespace suspend {
 
 struct NoFriction {
   static constexpr std::string_view name = "none";
-  void validate() const {}
+  void validate(std::string_view = "mu") const {}
   double coefficient() const { return 0.0; }
 
   template <class Reader>

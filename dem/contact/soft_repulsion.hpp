@@ -20,13 +20,14 @@ struct SoftRepulsion {
   static constexpr std::string_view name = "soft_repulsion";
   static constexpr std::string_view documentation = "docs/contact.md, section 'Soft repulsion'";
   static constexpr std::string_view friction_key = "mu";
+  static constexpr std::string_view stiffness_keys = "contact.k_hat";
   static constexpr std::string_view default_friction = "none";
   static constexpr double default_mu = 1.0;
 
   SoftRepulsionParams p;
 
   void validate() const {
-    require(p.kn, Range::positive(), "contact.kn");
+    require(p.kn, Range::positive(), "contact.k_hat");
     require(p.kt, Range::positive(), "contact.kt");
   }
   double range() const { return 0.0; }  // acts only on overlap

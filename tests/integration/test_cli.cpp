@@ -98,7 +98,7 @@ TEST(Cli, BadInputExitsWithTwoAndWritesNothing) {
                      "run.strain = 0.5 cannot be reached: with run.time_step.fixed = 1e-300", out);
   expect_input_error({"run", restart_case, "--out", out, "--set", "contact.k_hat=1e308", "--set",
                       "run.time_step.contacts=explicit"},
-                     "cannot be reached: with explicit contacts of stiffness 1e+308", out);
+                     "cannot be reached: with explicit contacts of stiffness 1e+308 (set by contact.k_hat)", out);
   expect_input_error({"run", restart_case, "--out", out, "--set", "flow.shear_rate=1e-12", "--set",
                       "run.time_step={mode: fixed, fixed: 1e-3}"},
                      "at flow.shear_rate = 1e-12, a step advances the strain by at most 1e-15", out);

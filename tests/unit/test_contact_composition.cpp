@@ -147,6 +147,30 @@ TEST(ContactComposition, FrictionNoneRefusesACoefficient) {
   }
 }
 
+// Messages name the key the case writes (issue 37, item 8): mu_s for the Hertz-adhesive law's friction, k_hat for
+// the springs, not the coefficients' internal names (2fbb67f said contact.mu and contact.kn).
+TEST(ContactComposition, ValidationNamesTheKeysOfTheCase) {
+  auto message = [](const auto& law) {
+    try {
+      law.validate();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const HertzAdhesive hertz(simple());
+  EXPECT_EQ(message(ContactModel<HertzAdhesive, CoulombFriction>{hertz, {{-0.5}}}).rfind("contact.mu_s", 0), 0u);
+  EXPECT_EQ(message(ContactModel<HertzAdhesive, CriticalLoadFriction>{hertz, {{-0.5, 0.1}}}).rfind("contact.mu_s", 0),
+            0u);
+  EXPECT_EQ(message(ContactModel<SoftRepulsion, CoulombFriction>{SoftRepulsion{{1.0e3, 200.0}}, {{-0.4}}})
+                .rfind("contact.mu =", 0),
+            0u);
+  EXPECT_EQ(message(ContactModel<SoftRepulsion>{SoftRepulsion{{-1.0, 200.0}}}).rfind("contact.k_hat", 0), 0u);
+  LinearSpringDashpot spring;
+  spring.p.kn = 0.0;
+  EXPECT_EQ(message(ContactModel<LinearSpringDashpot>{spring}).rfind("contact.k_hat", 0), 0u);
+}
+
 // Parameters per species pair: the pair of species 0 and 1 here slides without friction while like pairs keep
 // mu_s = 0.5 (a case such as smooth large spheres among rough small ones).
 TEST(ContactSpeciesPairs, ThePairsSpeciesChooseTheParameters) {
