@@ -16,6 +16,7 @@
 #include "io/case.hpp"
 #include "io/derived_rheology.hpp"
 #include "io/hdf5.hpp"
+#include "io/output_folder.hpp"
 #include "io/runner.hpp"
 
 namespace suspend::app {
@@ -59,6 +60,7 @@ void add_crossval_command(CLI::App& app) {
   cmd->add_flag("--quiet,-q", opt->run.quiet, "no progress output");
   cmd->callback([opt] {
     const fs::path dir(opt->run.out_dir);
+    io::refuse_foreign_folder(dir, io::FolderKind::crossval);
     json summaries;
     // Both cases are read (and so validated) before anything runs.
     std::vector<std::pair<std::string, io::Case>> cases;

@@ -11,6 +11,7 @@
 #include "campaign/phim.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 
 namespace suspend::app {
 
@@ -51,6 +52,7 @@ void add_phim_command(CLI::App& app) {
                        e.what() + ")");
     }
     const fs::path out = opt->out.empty() ? table_file.parent_path() : fs::path(opt->out);
+    io::refuse_foreign_folder(out.empty() ? fs::path(".") : out, io::FolderKind::phim);
     fs::create_directories(out.empty() ? fs::path(".") : out);
     io::write_text_atomically((out / "phim.json").string(), result.dump(2) + "\n");
     io::write_text_atomically((out / "phim.csv").string(), campaign::phim_csv(result));

@@ -15,6 +15,7 @@
 #include "campaign/sweep.hpp"
 #include "campaign/table.hpp"
 #include "core/error.hpp"
+#include "io/output_folder.hpp"
 
 namespace suspend::app {
 
@@ -58,6 +59,7 @@ void add_sweep_command(CLI::App& app) {
     }
     if (opt->out.empty()) throw InputError("--out: missing; give the campaign directory");
     opt->sweep.out_dir = opt->out;
+    io::refuse_foreign_folder(opt->out, io::FolderKind::campaign);
     if (cmd->count("--jobs") == 0) opt->sweep.jobs = std::max(1, omp_get_num_procs() / opt->sweep.threads);
     if (opt->status) {
       campaign::print_status(c, opt->out, opt->sweep.jobs);

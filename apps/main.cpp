@@ -39,7 +39,14 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    if (e.get_exit_code() == 0) {  // --help, --version: their text must arrive too
+      app.exit(e);
+      if (!std::cout.flush() || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        std::cerr << "error: writing the standard output failed: " << std::strerror(errno) << "\n";
+        return suspend::exit_output_error;
+      }
+      return 0;
+    }
     std::cerr << "error: " << e.what() << " (see suspend --help)\n";
     return suspend::exit_input_error;
   } catch (const suspend::InputError& e) {

@@ -4,9 +4,11 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <ctime>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace suspend::io {
 
@@ -19,8 +21,12 @@ FolderLock::FolderLock(const std::filesystem::path& file, const std::string& pur
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     ::close(fd_);
     fd_ = -1;
-    std::ifstream in(file);
-    std::getline(in, holder_);
+    // The holder writes who it is right after it takes the lock: give it a moment when the file is still empty.
+    for (int tries = 0; tries < 20 && holder_.empty(); ++tries) {
+      if (tries) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      std::ifstream in(file);
+      std::getline(in, holder_);
+    }
     if (holder_.empty()) holder_ = "another process";
     return;
   }
@@ -35,6 +41,21 @@ FolderLock::FolderLock(const std::filesystem::path& file, const std::string& pur
   // Should the description not be written, the lock still holds; a refusal then names "another process".
   [[maybe_unused]] const bool described =
       ::ftruncate(fd_, 0) == 0 && ::pwrite(fd_, text.data(), text.size(), 0) == static_cast<ssize_t>(text.size());
+}
+
+std::optional<std::string> FolderLock::holder_of(const std::filesystem::path& file) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return std::nullopt;
+  const bool free = ::flock(fd, LOCK_SH | LOCK_NB) == 0;
+  ::close(fd);
+  if (free) return std::nullopt;
+  std::string holder;
+  for (int tries = 0; tries < 20 && holder.empty(); ++tries) {
+    if (tries) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::ifstream in(file);
+    std::getline(in, holder);
+  }
+  return holder.empty() ? "another process" : holder;
 }
 
 FolderLock::~FolderLock() {

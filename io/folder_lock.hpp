@@ -8,6 +8,7 @@
 // off (HDF5_USE_FILE_LOCKING=FALSE).
 #pragma once
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -27,6 +28,9 @@ class FolderLock {
     std::swap(holder_, o.holder_);
     return *this;
   }
+  // Who holds the lock of `file` now, without taking it or writing anything; nullopt when nobody does.
+  static std::optional<std::string> holder_of(const std::filesystem::path& file);
+
   bool held() const { return fd_ >= 0; }
   int fd() const { return fd_; }
   // When not held: who holds it, as its file says ("process 123 on node7 (suspend run), since 2026-12-06 03:30:00").

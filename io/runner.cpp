@@ -19,6 +19,7 @@
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/folder_lock.hpp"
+#include "io/output_folder.hpp"
 #include "io/exact_tables.hpp"
 #include "io/initial_configuration.hpp"
 #include "io/output_room.hpp"
@@ -145,14 +146,16 @@ int run_case(const Case& c, const RunOptions& o) {
       throw InputError("--out: " + dir.string() + " is in use by " + lock.holder() +
                        "; wait for it to end or give another directory");
   };
-  if (fs::is_regular_file(dir / "run.h5") || fs::is_regular_file(dir / "checkpoint.h5")) lock_folder();
+  refuse_foreign_folder(dir, FolderKind::run);
+  // Continuing in the checkpoint's own folder (another folder holding a run is refused below, untouched).
+  const bool own_folder = restarting && fs::weakly_canonical(fs::absolute(dir)) ==
+                                            fs::weakly_canonical(fs::absolute(o.restart)).parent_path();
+  if (own_folder && (fs::is_regular_file(dir / "run.h5") || fs::is_regular_file(dir / "checkpoint.h5"))) lock_folder();
   if (restarting) {
     if (!fs::is_regular_file(o.restart)) throw InputError("--restart: '" + o.restart + "' does not exist");
     Checkpoint cp = read_checkpoint(o.restart, fingerprint);
     // Into a folder without run.h5 (another --out than the checkpoint's): a new record that starts at the
     // checkpoint's strain; into the checkpoint's own folder, its run.h5 continues.
-    const bool own_folder = fs::weakly_canonical(fs::absolute(dir)) ==
-                            fs::weakly_canonical(fs::absolute(o.restart)).parent_path();
     // Never into another run's folder: its record would be cut to the checkpoint's rows.
     if (!own_folder)
       for (const char* f : {"run.h5", "checkpoint.h5", "summary.json", "point.json"})
@@ -197,6 +200,9 @@ int run_case(const Case& c, const RunOptions& o) {
       << (branching ? "; a new run.h5 in " + dir.string() + " starts there" : std::string());
     origin = s.str();
   } else {
+    if (const auto holder = FolderLock::holder_of(dir / ".run.lock"))
+      throw InputError("--out: " + dir.string() + " is in use by " + *holder +
+                       "; wait for it to end or give another directory");
     if (fs::exists(dir / "run.h5"))
       throw InputError("--out: " + dir.string() + " already holds a run; continue it with --restart " +
                        join(dir, "checkpoint.h5") + " or choose another directory");

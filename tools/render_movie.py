@@ -4,7 +4,7 @@ tools/render_snapshot.py draws one: the spheres coloured by species, the contact
 force magnitude on one colour scale for the whole movie, and the Lees-Edwards sheared cell, with the strain and the
 relative viscosity eta_r (run.h5's series, the row nearest the snapshot) above each frame. Also writes the last
 frame as a still PNG. Everything is read through run.xdmf's references, like render_snapshot.py.
-Usage: tools/render_movie.py RUN_DIR --out FILE.mp4 [--still FRAME.png (default: FILE.png)] [--fps N (default 4)]
+Usage: tools/render_movie.py RUN_DIR --out FILE.mp4 [--still FRAME.png (default: FILE.png)] [--fps N (default 4)] [--force]
 [--dpi N (default 110)]"""
 import argparse
 import os
@@ -15,6 +15,9 @@ import tempfile
 import xml.etree.ElementTree as ET
 
 from debian_python import require
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+from suspend.output_rules import refuse_file, starts_with  # noqa: E402
 from render_snapshot import collection, draw, read_snapshot
 
 
@@ -43,6 +46,15 @@ def temporary(path, suffix):
     return name
 
 
+def mp4(path):
+    """An earlier movie: an ISO media file ('ftyp' box first)."""
+    try:
+        with open(path, "rb") as f:
+            return f.read(8)[4:8] == b"ftyp"
+    except OSError:
+        return False
+
+
 def main():
     if len(sys.argv) < 2 or sys.argv[1] in ("-h", "--help"):
         # --help: the whole docstring; no arguments: its usage line
@@ -53,6 +65,7 @@ def main():
     parser.add_argument("run", help="run directory (with run.xdmf and run.h5)")
     parser.add_argument("--out", required=True, help="MP4 to write")
     parser.add_argument("--still", help="PNG of the last frame (default: --out with .png)")
+    parser.add_argument("--force", action="store_true", help="replace existing files that are not earlier renders")
     parser.add_argument("--fps", type=int, default=4, help="frames (snapshots) per second (default 4)")
     parser.add_argument("--dpi", type=int, default=110, help="pixels per inch of the 7 x 6 inch frame (default 110)")
     args = parser.parse_args()
@@ -64,9 +77,10 @@ def main():
     if not os.path.isfile(xdmf):
         parser.exit(2, f"error: {xdmf}: no such file (suspend run writes it at the end or at a stop)\n")
     still = args.still or os.path.splitext(args.out)[0] + ".png"
-    for path in (args.out, still):
-        if not os.path.isdir(os.path.dirname(os.path.abspath(path))):
-            parser.exit(2, f"error: {path}: its folder does not exist\n")
+    for path, test, kind in ((args.out, mp4, "an MP4"), (still, starts_with(b"\x89PNG"), "a PNG")):
+        refusal = refuse_file(path, test, args.force, kind)
+        if refusal:
+            parser.exit(2, f"error: {path}: {refusal}\n")
     if shutil.which("ffmpeg") is None:
         parser.exit(2, "error: ffmpeg not found; install it with: bash scripts/install-deps.sh --movie\n")
     require("h5py", "numpy", "matplotlib")

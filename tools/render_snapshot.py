@@ -2,13 +2,16 @@
 """Draws one snapshot of a run the way ParaView shows run.xdmf: the spheres coloured by species, the contact
 network as lines coloured by the contact force magnitude, and the sheared periodic cell; everything is read through
 the XDMF's references (so the picture tests what a user opens). Headless (matplotlib Agg, 3-D).
-Usage: tools/render_snapshot.py RUN_DIR [--snapshot K (default: the last)] [--out FILE.png]"""
+Usage: tools/render_snapshot.py RUN_DIR [--snapshot K (default: the last)] [--out FILE.png] [--force]"""
 import argparse
 import os
 import sys
 import xml.etree.ElementTree as ET
 
 from debian_python import require
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+from suspend.output_rules import refuse_file, starts_with  # noqa: E402
 
 
 def values(item, base):
@@ -113,10 +116,15 @@ def main():
     parser.add_argument("run", help="run directory (with run.xdmf and run.h5)")
     parser.add_argument("--snapshot", type=int, default=-1, help="snapshot index from 0 (default: the last)")
     parser.add_argument("--out", help="PNG to write (default RUN_DIR/snapshot.png)")
+    parser.add_argument("--force", action="store_true", help="replace an existing --out that is not a PNG")
     args = parser.parse_args()
     xdmf = os.path.join(args.run, "run.xdmf")
     if not os.path.isfile(xdmf):
         parser.exit(2, f"error: {xdmf}: no such file (suspend run writes it at the end or at a stop)\n")
+    out = args.out or os.path.join(args.run, "snapshot.png")
+    refusal = refuse_file(out, starts_with(b"\x89PNG"), args.force, "a PNG")
+    if refusal:
+        parser.exit(2, f"error: --out {out}: {refusal}\n")
     require("h5py", "numpy", "matplotlib")
     import matplotlib
     matplotlib.use("Agg")
@@ -132,7 +140,6 @@ def main():
     fig = plt.figure(figsize=(7, 6), dpi=110)
     draw(fig, snap, f"{os.path.basename(os.path.abspath(args.run))}: strain {snap['strain']:.3g}, "
                     f"{len(snap['radius'])} spheres, {line_count} contacts")
-    out = args.out or os.path.join(args.run, "snapshot.png")
     fig.savefig(out)
     print(f"{out}: snapshot {snap['name']}, strain {snap['strain']:.4g}, {len(snap['radius'])} spheres, "
           f"{line_count} contacts")

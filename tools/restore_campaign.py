@@ -38,8 +38,8 @@ def main():
         if p["status"] not in ("done", "jammed") or p.get("summary") is None:
             continue
         folder = os.path.join(out, "points", p["name"])
-        if os.path.exists(os.path.join(folder, "point.json")):
-            kept += 1  # the folder's own record wins over the table's
+        if any(os.path.exists(os.path.join(folder, f)) for f in ("point.json", "summary.json", "run.h5")):
+            kept += 1  # the folder's own record or run wins over the table's, and is never written over
             continue
         os.makedirs(folder, exist_ok=True)
         write_atomically(os.path.join(folder, "summary.json"), json.dumps(p["summary"], indent=2) + "\n")

@@ -116,11 +116,6 @@ def check_snapshot(s):
     return species
 
 
-# What a run or a campaign folder holds: never an export's target, --force or not.
-RUN_FILES = {"run.h5", "checkpoint.h5", "run.xdmf", "summary.json", "point.json", "log.txt", "campaign.json",
-             "campaign.csv", "sweep.json", "phim.json", "phim.csv"}
-
-
 def is_export(path, fmt):
     """Whether an existing file is an export of this format (so that exporting again may replace it)."""
     try:
@@ -135,18 +130,9 @@ def is_export(path, fmt):
 
 
 def refuse_out(out, fmt, force):
-    """Why `out` may not be written (None when it may): the run's own files never, a folder or a missing folder
-    never, any other existing file that is not an export of this format only with --force."""
-    if os.path.basename(out) in RUN_FILES or out.endswith(".h5"):
-        return "a run's or campaign's own file name; choose another"
-    if os.path.isdir(out):
-        return "is a directory; give a file name"
-    parent = os.path.dirname(os.path.abspath(out))
-    if not os.path.isdir(parent):
-        return f"the folder {parent} does not exist"
-    if os.path.exists(out) and not force and not is_export(out, fmt):
-        return f"exists and is not a {fmt} export; choose another name or pass --force to replace it"
-    return None
+    """Why `out` may not be written (None when it may): suspend.output_rules, an earlier export of `fmt` replaced."""
+    from suspend.output_rules import refuse_file
+    return refuse_file(out, lambda path: is_export(path, fmt), force, f"a {fmt} export")
 
 
 def main(argv=None):
