@@ -11,6 +11,7 @@
 #include "campaign/campaign.hpp"
 #include "campaign/mpi_sweep.hpp"
 #include "campaign/point_record.hpp"
+#include "campaign/search.hpp"
 #include "campaign/status.hpp"
 #include "campaign/sweep.hpp"
 #include "campaign/table.hpp"
@@ -46,7 +47,12 @@ void add_sweep_command(CLI::App& app) {
                 "print each point's state (running ones with their strain and rate) and the time left; starts nothing");
   cmd->add_flag("--quiet,-q", opt->sweep.quiet, "no progress lines");
   cmd->callback([opt, cmd] {
-    const campaign::Campaign c = campaign::load_campaign(opt->campaign_file);
+    campaign::Campaign c = campaign::load_campaign(opt->campaign_file);
+    std::vector<campaign::GroupSearch> plan;
+    if (c.search) {  // the points the search has decided on so far, from the records under --out
+      plan = campaign::plan_search(c, opt->out.empty() ? fs::path("/nonexistent") : fs::path(opt->out));
+      c = campaign::with_search_points(c, plan);
+    }
     if (opt->list) {
       for (const campaign::Point& p : c.points) {
         if (opt->out.empty())
@@ -55,6 +61,7 @@ void add_sweep_command(CLI::App& app) {
           std::printf("%-40s %s\n", p.name.c_str(),
                       campaign::read_record(campaign::point_dir(opt->out, p)).status.c_str());
       }
+      if (c.search) std::printf("# search of %s:\n%s", c.search->key.c_str(), campaign::describe_search(c, plan).c_str());
       return;
     }
     if (opt->out.empty()) throw InputError("--out: missing; give the campaign directory");
@@ -65,8 +72,12 @@ void add_sweep_command(CLI::App& app) {
       campaign::print_status(c, opt->out, opt->sweep.jobs);
       return;
     }
-    const int code = campaign::launched_by_mpi() ? campaign::run_sweep_mpi(c, opt->sweep)
-                                                 : campaign::run_sweep(c, opt->sweep);
+    if (c.search && campaign::launched_by_mpi())
+      throw InputError("search: a boundary search runs under one sweep process (--jobs N), not under mpirun yet; "
+                       "leave mpirun out, or list the points of a finished search as a plain campaign");
+    const int code = c.search && opt->sweep.only_point.empty() ? campaign::run_search_sweep(c, opt->sweep)
+                     : campaign::launched_by_mpi()             ? campaign::run_sweep_mpi(c, opt->sweep)
+                                                               : campaign::run_sweep(c, opt->sweep);
     if (code != 0) std::exit(code);
   });
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 
@@ -91,13 +92,66 @@ void append_product(const YAML::Node& vary, const std::string& where, std::vecto
   out.insert(out.end(), product.begin(), product.end());
 }
 
+Search read_search(const YAML::Node& n) {
+  if (!n.IsMap())
+    throw InputError("search: must be a mapping {key: particles.phi, lo: 0.40, hi: 0.62, tolerance: 0.01, seeds: 3}");
+  const std::vector<std::string> allowed = {"key", "lo", "hi", "tolerance", "seeds"};
+  for (const auto& kv : n) {
+    const std::string k = kv.first.Scalar();
+    if (std::find(allowed.begin(), allowed.end(), k) == allowed.end()) {
+      const std::string near = io::closest_word(k, allowed);
+      throw InputError("search." + k + ": unknown key" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+                       "; allowed: key, lo, hi, tolerance, seeds");
+    }
+  }
+  auto number = [&](const char* k) {
+    if (!n[k]) throw InputError(std::string("search.") + k + ": missing");
+    try {
+      const double v = n[k].as<double>();
+      if (!std::isfinite(v)) throw YAML::Exception(YAML::Mark::null_mark(), "");
+      return v;
+    } catch (const YAML::Exception&) {
+      throw InputError(std::string("search.") + k + ": '" + yaml_text(n[k]) + "' is not a finite number");
+    }
+  };
+  Search s;
+  s.key = key_of(n["key"] ? n["key"] : YAML::Node(""), "search.key");
+  s.lo = number("lo");
+  s.hi = number("hi");
+  s.tolerance = number("tolerance");
+  const double seeds = n["seeds"] ? number("seeds") : 1.0;
+  if (!(s.lo < s.hi)) throw InputError("search: lo = " + yaml_text(n["lo"]) + " must be below hi = " + yaml_text(n["hi"]));
+  if (!(s.tolerance > 0.0)) throw InputError("search.tolerance: must be > 0, not " + yaml_text(n["tolerance"]));
+  if (s.tolerance >= s.hi - s.lo) throw InputError("search.tolerance: must be below hi - lo (nothing to search)");
+  if (!(seeds >= 1.0) || seeds != std::floor(seeds) || seeds > 100)
+    throw InputError("search.seeds: must be a whole number from 1 to 100, not " + yaml_text(n["seeds"]));
+  s.seeds = static_cast<int>(seeds);
+  return s;
+}
+
 }  // namespace
+
+std::string format_value(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
 
 std::vector<std::string> Campaign::overrides(const Point& p) const {
   std::vector<std::string> out;
   for (const Assignment& a : set) out.push_back(a.key + "=" + a.value);
   for (const Assignment& a : p.parameters) out.push_back(a.key + "=" + a.value);
   return out;
+}
+
+Point Campaign::make_point(const std::vector<Assignment>& parameters) const {
+  Point p{point_name(parameters, varied_keys), parameters, ""};
+  try {
+    p.identity = io::result_identity(io::load_case(case_file, overrides(p)));
+  } catch (const InputError& e) {
+    throw InputError("point " + p.name + ": " + e.what());
+  }
+  return p;
 }
 
 const Point* Campaign::find(const std::string& name) const {
@@ -109,13 +163,13 @@ const Point* Campaign::find(const std::string& name) const {
 Campaign load_campaign(const std::string& path) {
   const YAML::Node root = io::load_yaml_document(path, "campaign");
   if (!root.IsMap()) throw InputError(path + ": a campaign file is a mapping with keys case, set, vary, points");
-  const std::vector<std::string> allowed = {"case", "set", "vary", "points"};
+  const std::vector<std::string> allowed = {"case", "set", "vary", "points", "search"};
   for (const auto& kv : root) {
     const std::string k = kv.first.Scalar();
     if (std::find(allowed.begin(), allowed.end(), k) == allowed.end()) {
       const std::string near = io::closest_word(k, allowed);
       throw InputError(k + ": unknown campaign key" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
-                       "; allowed: case, set, vary, points");
+                       "; allowed: case, set, vary, points, search");
     }
   }
   Campaign c;
@@ -153,9 +207,30 @@ Campaign load_campaign(const std::string& path) {
     for (const Assignment& a : ps)
       if (std::find(c.varied_keys.begin(), c.varied_keys.end(), a.key) == c.varied_keys.end())
         c.varied_keys.push_back(a.key);
+  if (root["search"]) {
+    c.search = read_search(root["search"]);
+    for (const std::string& k : {c.search->key, std::string("run.seed")})
+      if (std::find(c.varied_keys.begin(), c.varied_keys.end(), k) != c.varied_keys.end())
+        throw InputError("search.key: " + k + " is also varied (vary or points); the search sets it");
+    c.varied_keys.push_back(c.search->key);
+    c.varied_keys.push_back("run.seed");
+  }
   for (const Assignment& a : c.set)
     if (std::find(c.varied_keys.begin(), c.varied_keys.end(), a.key) != c.varied_keys.end())
-      throw InputError("set." + a.key + ": also varied (vary or points); give each key in one place");
+      throw InputError("set." + a.key + ": also varied (vary, points or search); give each key in one place");
+  if (c.search) {
+    // The groups are checked as cases at both ends of the range; the points come from the search.
+    for (const auto& ps : parameter_sets) {
+      for (const double v : {c.search->lo, c.search->hi}) {
+        std::vector<Assignment> at = ps;
+        at.push_back({c.search->key, format_value(v)});
+        at.push_back({"run.seed", "1"});
+        c.make_point(at);
+      }
+      c.groups.push_back(ps);
+    }
+    return c;
+  }
   std::map<std::string, std::size_t> names;
   for (const auto& ps : parameter_sets) {
     Point p{point_name(ps, c.varied_keys), ps, ""};

@@ -338,7 +338,14 @@ int run_case(const Case& c, const RunOptions& o) {
       finish_outputs();
       progress.finish();
       const double from = write_partial_summary(
-          "jammed", {{"jammed", {{"mean_shear_rate", rate}, {"over_time", over_time}, {"threshold", jam_rate}}}});
+          "jammed", {{"jammed",
+                      {{"mean_shear_rate", rate},
+                       {"over_time", over_time},
+                       {"threshold", jam_rate},
+                       // Arrest of a state that flowed, or of one that never did (a packing arrested at once):
+                       // it flowed first when it sheared by more than one jamming window before it stopped.
+                       {"strain_reached", progress_of()},
+                       {"flowed_first", progress_of() > c.run.jammed_strain}}}});
       std::fprintf(stderr,
                    "jammed: the mean shear rate was %.3g over the last %.4g time units (threshold "
                    "Sigma/run.jammed.viscosity = %.3g) at strain %.4g; summary.json averages from strain %.4g\n",

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -145,6 +146,70 @@ TEST(Sweep, TwoSweepsOnOneFolderRunEachPointOnce) {
   ASSERT_EQ(again.code, 0) << again.err;
   EXPECT_EQ(table(shared), table(clean));
   EXPECT_EQ(json::parse(read_text(record))["runs"], 1) << "the ended point was run again";
+}
+
+// The boundary search (issue 34): under imposed stress with run.jammed.viscosity = 3, a point jams where eta_r
+// exceeds about 3, which the frictional restart case does between phi 0.3 and 0.35. Bisection of phi in [0.1, 0.5]
+// to 0.05 with 3 seeds tries 0.1 and 0.5, then 0.3, 0.4 and 0.35, and stops at the bracket [0.3, 0.35]; one job or
+// two give the same table, a second sweep adds nothing, a SIGKILLed search resumes to the same table, and a range
+// whose low end jams is reported as such.
+TEST(Sweep, TheSearchBisectsToTheBoundaryWithSeeds) {
+  const std::string body = "case: " + restart_case +
+                           "\nset: {particles.count: 40, run.strain: 0.3, run.average_from: 0, flow.control: stress, "
+                           "flow.shear_stress: 1, run.jammed.viscosity: 3, run.jammed.strain: 0.01}\n";
+  const std::string file =
+      write_case("search.yaml", body + "search: {key: particles.phi, lo: 0.1, hi: 0.5, tolerance: 0.05, seeds: 3}\n");
+  const std::string one = fresh_dir("search_one"), two = fresh_dir("search_two"), killed = fresh_dir("search_kill");
+  const Result r = run({"sweep", file, "--out", two, "--jobs", "2"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("converged, bracket [0.3, 0.35]"), std::string::npos) << r.out;
+  const json t = table(two);
+  ASSERT_EQ(t["points"].size(), 15u) << "5 values x 3 seeds";
+  std::map<double, std::pair<int, int>> at;  // phi -> (flowed, jammed)
+  for (const json& p : t["points"]) {
+    auto& [flowed, jammed] = at[p["case"]["phi"].get<double>()];
+    (p["status"] == "done" ? flowed : jammed) += 1;
+  }
+  EXPECT_EQ((std::vector<double>{0.1, 0.3, 0.35, 0.4, 0.5}), [&] {
+    std::vector<double> v;
+    for (const auto& [phi, counts] : at) v.push_back(phi);
+    return v;
+  }());
+  EXPECT_GE(at[0.3].first, 2);
+  EXPECT_GE(at[0.35].second, 2);
+  const Result again = run({"sweep", file, "--out", two});
+  EXPECT_EQ(again.code, 0);
+  EXPECT_EQ(again.out.find("start "), std::string::npos) << "a finished search runs nothing: " << again.out;
+  EXPECT_EQ(table(two), t);
+  const Result list = run({"sweep", file, "--out", two, "--list"});
+  EXPECT_NE(list.out.find("base: converged, bracket [0.3, 0.35]"), std::string::npos) << list.out;
+
+  ASSERT_EQ(run({"sweep", file, "--out", one, "--jobs", "1", "--quiet"}).code, 0);
+  EXPECT_EQ(table(one), t);
+  const pid_t pid = spawn({"sweep", file, "--out", killed, "--jobs", "1", "--quiet"}, killed + ".err", true);
+  while (!fs::exists(killed + "/points/phi0.3_seed1/summary.json")) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  kill(-pid, SIGKILL);
+  wait_exit(pid);
+  ASSERT_EQ(run({"sweep", file, "--out", killed, "--jobs", "2", "--quiet"}).code, 0);
+  EXPECT_EQ(table(killed), t);
+
+  const std::string below = write_case("below.yaml", body + "search: {key: particles.phi, lo: 0.4, hi: 0.5, "
+                                                            "tolerance: 0.02}\n");
+  const Result b = run({"sweep", below, "--out", fresh_dir("search_below")});
+  EXPECT_EQ(b.code, 0) << b.err;
+  EXPECT_NE(b.out.find("below lo: particles.phi = 0.4 already jams"), std::string::npos) << b.out;
+  expect_input_error({"sweep", write_case("bad_search.yaml", body + "search: {key: particles.phi, lo: 0.5, hi: 0.1, "
+                                                                    "tolerance: 0.05}\n"), "--list"},
+                     "search: lo = 0.5 must be below hi = 0.1", "");
+  expect_input_error({"sweep", write_case("bad_search2.yaml", body + "search: {key: particles.phi, lo: 0.1, hi: 0.5, "
+                                                                     "tolerance: 0.05, seeds: 0}\n"), "--list"},
+                     "search.seeds: must be a whole number from 1 to 100, not 0", "");
+  expect_input_error({"sweep", write_case("bad_search3.yaml", body + "search: {key: particles.phi, lo: 0.1, hi: 0.5, "
+                                                                     "tolerance: -1}\n"), "--list"},
+                     "search.tolerance: must be > 0", "");
+  expect_input_error({"sweep", write_case("bad_search4.yaml", body + "search: {key: particles.phi, lo: 0.1, hi: 0.5, "
+                                                                     "toleranse: 0.1}\n"), "--list"},
+                     "search.toleranse: unknown key (did you mean 'tolerance'?)", "");
 }
 
 TEST(Sweep, ChangedCampaignIsRefusedAddedPointsRun) {

@@ -1,0 +1,156 @@
+#include "campaign/search.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/error.hpp"
+
+#include "campaign/point_record.hpp"
+#include "campaign/table.hpp"
+
+namespace suspend::campaign {
+
+namespace fs = std::filesystem;
+
+bool SearchedValue::decided() const { return flowed + jammed == static_cast<int>(points.size()); }
+
+bool SearchedValue::flows() const { return decided() && 2 * flowed > static_cast<int>(points.size()); }
+
+namespace {
+std::vector<Assignment> at_value(const std::vector<Assignment>& group, const Search& s, double v, int seed) {
+  std::vector<Assignment> a = group;
+  a.push_back({s.key, format_value(v)});
+  a.push_back({"run.seed", std::to_string(seed)});
+  return a;
+}
+}  // namespace
+
+std::vector<GroupSearch> plan_search(const Campaign& c, const fs::path& out_dir) {
+  const Search& s = *c.search;
+  std::vector<GroupSearch> plan;
+  for (const std::vector<Assignment>& group : c.groups) {
+    GroupSearch g;
+    g.group = group;
+    g.name = group.empty() ? "base" : c.make_point(group).name;
+    // A value's seeds, read from their records; returns false when one of them failed (the search cannot go on).
+    auto visit = [&](double v) -> const SearchedValue* {
+      SearchedValue sv;
+      sv.value = v;
+      for (int seed = 1; seed <= s.seeds; ++seed) {
+        const Point p = c.make_point(at_value(group, s, v, seed));
+        sv.points.push_back(p.name);
+        const std::string status = read_record(point_dir(out_dir, p)).status;
+        if (status == "done") ++sv.flowed;
+        else if (status == "jammed") ++sv.jammed;
+        else if (status == "failed") g.state = "stopped: point " + p.name + " failed (see its log; --retry-failed)";
+      }
+      g.values.push_back(sv);
+      return &g.values.back();
+    };
+    // Both ends first (together), then bisection on the grid.
+    const SearchedValue lo = *visit(s.lo);
+    const SearchedValue hi = *visit(s.hi);
+    if (!g.state.empty()) {
+      plan.push_back(std::move(g));
+      continue;
+    }
+    if (!lo.decided() || !hi.decided()) {
+      g.state = "searching";
+      if (!lo.decided()) g.next.push_back(s.lo);
+      if (!hi.decided()) g.next.push_back(s.hi);
+      plan.push_back(std::move(g));
+      continue;
+    }
+    if (!lo.flows()) g.state = "below lo: " + c.search->key + " = " + format_value(s.lo) + " already jams";
+    else if (hi.flows()) g.state = "above hi: " + c.search->key + " = " + format_value(s.hi) + " still flows";
+    if (!g.state.empty()) {
+      plan.push_back(std::move(g));
+      continue;
+    }
+    g.bracketed = true;
+    g.flow_hi = s.lo;
+    g.jam_lo = s.hi;
+    const double grid = s.grid();
+    for (;;) {
+      if (g.jam_lo - g.flow_hi <= s.tolerance * (1.0 + 1e-9)) {
+        g.state = "converged";
+        break;
+      }
+      // The midpoint on the grid, strictly inside the bracket.
+      const double steps = std::round((0.5 * (g.flow_hi + g.jam_lo) - s.lo) / grid);
+      const double mid = std::round((s.lo + steps * grid) * 1e9) / 1e9;
+      if (!(mid > g.flow_hi + 1e-12 && mid < g.jam_lo - 1e-12)) {
+        g.state = "converged";
+        break;
+      }
+      const SearchedValue m = *visit(mid);
+      if (!g.state.empty()) break;
+      if (!m.decided()) {
+        g.state = "searching";
+        g.next.push_back(mid);
+        break;
+      }
+      (m.flows() ? g.flow_hi : g.jam_lo) = mid;
+    }
+    plan.push_back(std::move(g));
+  }
+  return plan;
+}
+
+Campaign with_search_points(const Campaign& c, const std::vector<GroupSearch>& plan) {
+  Campaign out = c;
+  out.points.clear();
+  for (const GroupSearch& g : plan)
+    for (const SearchedValue& v : g.values)
+      for (int seed = 1; seed <= c.search->seeds; ++seed)
+        out.points.push_back(c.make_point(at_value(g.group, *c.search, v.value, seed)));
+  return out;
+}
+
+std::string describe_search(const Campaign& c, const std::vector<GroupSearch>& plan) {
+  std::string out;
+  for (const GroupSearch& g : plan) {
+    std::string line = g.name + ": ";
+    line += g.state;
+    if (g.bracketed)
+      line += ", bracket [" + format_value(g.flow_hi) + ", " + format_value(g.jam_lo) + "]";
+    if (!g.next.empty()) {
+      line += ", next";
+      for (double v : g.next) {
+        line += ' ';
+        line += format_value(v);
+      }
+      line += " (" + std::to_string(c.search->seeds) + " seed(s) each)";
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+int run_search_sweep(const Campaign& c, const SweepOptions& o) {
+  int code = 0;
+  std::size_t finished_before = static_cast<std::size_t>(-1);
+  for (;;) {
+    const std::vector<GroupSearch> plan = plan_search(c, o.out_dir);
+    const Campaign round = with_search_points(c, plan);
+    std::size_t finished = 0, to_run = 0;
+    for (const Point& p : round.points) {
+      const std::string s = read_record(point_dir(o.out_dir, p)).status;
+      if (s == "done" || s == "jammed") ++finished;
+      else if (s != "failed" || o.retry_failed) ++to_run;
+    }
+    // Nothing left, or a round that ended nothing (its points held by another process): the search waits for them.
+    if (to_run == 0 || finished == finished_before) {
+      check_and_record_points(round, o.out_dir);
+      write_table(round, o.out_dir);
+      if (!o.quiet) std::printf("%s", describe_search(c, plan).c_str()), std::fflush(stdout);
+      return code;
+    }
+    finished_before = finished;
+    if (!o.quiet) std::printf("%s", describe_search(c, plan).c_str()), std::fflush(stdout);
+    code = run_sweep(round, o);
+    if (code > 128 || code == exit_output_error) return code;  // stopped, or the disk is full
+  }
+}
+
+}  // namespace suspend::campaign
