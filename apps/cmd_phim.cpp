@@ -60,8 +60,8 @@ void add_phim_command(CLI::App& app) {
       std::printf("%s\n", result.dump(2).c_str());
       return;
     }
-    std::printf("%-9s %5s %9s %18s %16s %6s %8s  %s\n", "model", "mu_s", "sigma*", "phi_m", "alpha", "points",
-                "chi2/dof", "note");
+    std::printf("%-9s %5s %9s %18s %16s %6s %8s %26s %7s  %s\n", "model", "mu_s", "sigma*", "phi_m", "alpha", "points",
+                "chi2/dof", "bracket (flowed/seeds)", "result", "note");
     for (const json& f : result["fits"]) {
       char sigma[16], phim[40] = "-", alpha[40] = "-", chi[16] = "-";
       if (f["sigma_star"].is_null()) std::snprintf(sigma, sizeof sigma, "inf");
@@ -71,8 +71,16 @@ void add_phim_command(CLI::App& app) {
         std::snprintf(alpha, sizeof alpha, "%.3f +- %.3f", f["alpha"].get<double>(), f["alpha_err"].get<double>());
         std::snprintf(chi, sizeof chi, "%.2f", f["chi2_reduced"].get<double>());
       }
-      std::printf("%-9s %5.2g %9s %18s %16s %6d %8s  %s\n", f["model"].get<std::string>().c_str(),
-                  f["mu_s"].get<double>(), sigma, phim, alpha, f["points"].get<int>(), chi,
+      char bracket[64] = "-";
+      if (f["bracket"].is_array()) {
+        const json &b = f["bracket"], &n = f["bracket_seeds"], &q = f["bracket_flowing_fraction"];
+        std::snprintf(bracket, sizeof bracket, "[%.4g, %.4g] (%.0f/%d, %.0f/%d)", b[0].get<double>(), b[1].get<double>(),
+                      q[0].get<double>() * n[0].get<int>(), n[0].get<int>(), q[1].get<double>() * n[1].get<int>(),
+                      n[1].get<int>());
+      }
+      std::printf("%-9s %5.2g %9s %18s %16s %6d %8s %26s %7s  %s\n", f["model"].get<std::string>().c_str(),
+                  f["mu_s"].get<double>(), sigma, phim, alpha, f["points"].get<int>(), chi, bracket,
+                  f["result"].is_string() ? f["result"].get<std::string>().c_str() : "-",
                   f.contains("note") ? f["note"].get<std::string>().c_str() : "");
     }
     std::printf("written to %s and %s\n", (out / "phim.json").c_str(), (out / "phim.csv").c_str());

@@ -30,7 +30,24 @@ double group_value(double s) {
 struct Group {
   std::vector<ViscosityPoint> points;
   std::vector<std::pair<std::string, double>> jammed;  // name, phi
+  std::map<double, std::vector<ViscosityPoint>> seeds;  // flowing points by requested phi (several seeds each)
+  std::map<double, std::pair<int, int>> outcomes;      // requested phi -> (seeds that flowed, seeds that jammed)
 };
+
+// The seeds of one requested phi as one point: the mean eta_r, with the larger of two standard errors of that mean,
+// the seeds' own scatter (sd / sqrt(n), which holds the packing-to-packing spread) and their block errors combined
+// (sqrt(sum sem^2) / n); one seed is itself.
+ViscosityPoint merge_seeds(const std::vector<ViscosityPoint>& s) {
+  if (s.size() == 1) return s.front();
+  const double n = static_cast<double>(s.size());
+  ViscosityPoint m{0.0, 0.0, 0.0};
+  double sem2 = 0.0;
+  for (const ViscosityPoint& q : s) m.phi += q.phi / n, m.eta += q.eta / n, sem2 += q.sem * q.sem;
+  double var = 0.0;
+  for (const ViscosityPoint& q : s) var += (q.eta - m.eta) * (q.eta - m.eta) / (n - 1.0);
+  m.sem = std::max(std::sqrt(var / n), std::sqrt(sem2) / n);
+  return m;
+}
 using Key = std::tuple<std::string, double, double>;  // model, mu_s, sigma*
 
 // Rate-controlled adhesive points at one phi, interpolated at each target sigma* inside their range.
@@ -61,19 +78,23 @@ json fit_phim(const json& table, const PhimOptions& o) {
     const double mu_s = c["mu_s"].get<double>(), g_adh = c["g_adh"].get<double>();
     const bool stress = c["control"] == "stress";
     const std::string status = e["status"].get<std::string>();
+    const double requested_phi = group_value(c["phi"].get<double>());
     if (status == "jammed") {
       const double s = g_adh > 0 && stress ? group_value(c["shear_stress"].get<double>() / g_adh) : infinite;
-      if (stress || g_adh == 0) groups[{model, mu_s, s}].jammed.emplace_back(e["name"], c["phi"].get<double>());
+      if (stress || g_adh == 0) {
+        groups[{model, mu_s, s}].jammed.emplace_back(e["name"], c["phi"].get<double>());
+        ++groups[{model, mu_s, s}].outcomes[requested_phi].second;
+      }
       continue;
     }
     if (status != "done" || e["summary"].is_null()) continue;
     const double phi = number(e["summary"]["phi"]);
     if (phi < o.min_phi) continue;
     const double eta = number(e["summary"]["eta_r"]["mean"]), sem = number(e["summary"]["eta_r"]["sem"]);
-    if (g_adh == 0.0) {
-      groups[{model, mu_s, infinite}].points.push_back({phi, eta, sem});
-    } else if (stress) {
-      groups[{model, mu_s, group_value(c["shear_stress"].get<double>() / g_adh)}].points.push_back({phi, eta, sem});
+    if (g_adh == 0.0 || stress) {
+      Group& g = groups[{model, mu_s, g_adh == 0.0 ? infinite : group_value(c["shear_stress"].get<double>() / g_adh)}];
+      g.seeds[requested_phi].push_back({phi, eta, sem});
+      ++g.outcomes[requested_phi].first;
     } else {
       sequences[{model, mu_s, c["phi"].get<double>()}].emplace_back(number(e["summary"]["sigma_star"]["mean"]), phi,
                                                                     eta, sem);
@@ -84,6 +105,7 @@ json fit_phim(const json& table, const PhimOptions& o) {
   json fits = json::array();
   for (auto& [key, g] : groups) {
     const auto& [model, mu_s, sigma_star] = key;
+    for (const auto& [requested, s] : g.seeds) g.points.push_back(merge_seeds(s));
     std::sort(g.points.begin(), g.points.end(), [](const auto& a, const auto& b) { return a.phi < b.phi; });
     json f;
     f["model"] = model;
@@ -105,10 +127,48 @@ json fit_phim(const json& table, const PhimOptions& o) {
       f["jammed_below_phi_m"] = below;
       if (!below.empty()) f["note"] = "jammed point(s) below the fitted phi_m";
       if (!fit->bracketed) f["note"] = "chi^2 still falls at phi_m = 1: the data do not pin the divergence";
+      // Leave-one-point-out: how far phi_m moves without each point (a fit that depends on one point, or on a
+      // law that does not describe the points, moves more than its bootstrap error says). The total error adds
+      // it in quadrature to the bootstrap's (whose per-point errors hold the seed-to-seed scatter, merge_seeds).
+      double lopo = 0.0;
+      if (g.points.size() >= 4)
+        for (std::size_t i = 0; i < g.points.size(); ++i) {
+          std::vector<ViscosityPoint> rest = g.points;
+          rest.erase(rest.begin() + static_cast<long>(i));
+          if (const auto without = fit_maron_pierce(rest, nullptr, 1))
+            lopo = std::max(lopo, std::abs(without->phi_m - fit->phi_m));
+        }
+      f["phi_m_err_lopo"] = g.points.size() >= 4 ? json(lopo) : json();
+      f["phi_m_err_total"] = std::hypot(fit->phi_m_err, lopo);
     } else {
       f["phi_m"] = nullptr;
       f["note"] = why;
     }
+    // The bracket: the highest requested phi that a majority of its seeds flowed at, the lowest that a majority
+    // (or half) jammed at. It is the group's phi_m when there is no fit, or when a jammed point or the bracket
+    // itself contradicts the fit.
+    double flows_hi = -1.0, jams_lo = 2.0;
+    for (const auto& [phi, seeds] : g.outcomes)
+      if (2 * seeds.first > seeds.first + seeds.second) flows_hi = std::max(flows_hi, phi);
+      else jams_lo = std::min(jams_lo, phi);
+    f["bracket"] = nullptr;
+    std::string result = fit ? "fit" : "";
+    if (flows_hi > 0.0 && jams_lo < 2.0) {
+      const auto [lf, lj] = g.outcomes[flows_hi];
+      const auto [uf, uj] = g.outcomes[jams_lo];
+      f["bracket"] = {flows_hi, jams_lo};
+      f["bracket_seeds"] = {lf + lj, uf + uj};
+      f["bracket_flowing_fraction"] = {static_cast<double>(lf) / (lf + lj), static_cast<double>(uf) / (uf + uj)};
+      if (flows_hi > jams_lo) {
+        const std::string monotone = "not monotone: a majority flowed above a value where a majority jammed";
+        f["note"] = f.contains("note") ? f["note"].get<std::string>() + "; " + monotone : monotone;
+      }
+      const bool contradicted =
+          fit && (!f["jammed_below_phi_m"].empty() || fit->phi_m < flows_hi - f["phi_m_err_total"].get<double>() ||
+                  fit->phi_m > jams_lo + f["phi_m_err_total"].get<double>());
+      if (!fit || contradicted) result = "bracket";
+    }
+    f["result"] = result.empty() ? json() : json(result);
     json jammed = json::array();
     for (const auto& [name, phi] : g.jammed) jammed.push_back(phi);
     f["jammed_phi"] = jammed;
@@ -122,7 +182,8 @@ json fit_phim(const json& table, const PhimOptions& o) {
 
 std::string phim_csv(const json& result) {
   std::ostringstream out;
-  out << "model,mu_s,sigma_star,phi_m,phi_m_err,alpha,alpha_err,points,chi2_reduced,note\n";
+  out << "model,mu_s,sigma_star,phi_m,phi_m_err,alpha,alpha_err,points,chi2_reduced,note,phi_m_err_total,result,"
+         "bracket_lo,bracket_hi,seeds_lo,seeds_hi,flowing_lo,flowing_hi\n";
   auto cell = [&](const json& v) {
     if (v.is_number()) {
       char b[32];
@@ -138,10 +199,16 @@ std::string phim_csv(const json& result) {
     out << ',';
     if (f["sigma_star"].is_null()) out << "inf";
     else cell(f["sigma_star"]);
-    for (const char* k : {"phi_m", "phi_m_err", "alpha", "alpha_err", "points", "chi2_reduced", "note"}) {
+    for (const char* k : {"phi_m", "phi_m_err", "alpha", "alpha_err", "points", "chi2_reduced", "note",
+                          "phi_m_err_total", "result"}) {
       out << ',';
       if (f.contains(k)) cell(f[k]);
     }
+    for (const char* k : {"bracket", "bracket_seeds", "bracket_flowing_fraction"})
+      for (int end = 0; end < 2; ++end) {
+        out << ',';
+        if (f.contains(k) && f[k].is_array()) cell(f[k][end]);
+      }
     out << '\n';
   }
   return out.str();

@@ -151,3 +151,52 @@ TEST(Phim, GroupsByMuAndSigmaStarFlagsJammedPointsAndInterpolatesRateControl) {
   EXPECT_TRUE(cut["fits"][1]["phi_m"].is_null());
   EXPECT_NE(cut["fits"][1]["note"].get<std::string>().find("at least 3"), std::string::npos);
 }
+
+// Seeds and brackets (issue 34): three seeds per phi under imposed stress. The bracket is the highest phi that a
+// majority of its seeds flowed at and the lowest that a majority jammed at, with the seeds and flowing fractions at
+// both ends; the seeds of one phi enter the fit as one point whose error holds their scatter; the total error holds
+// the leave-one-point-out spread; a jammed point below the fitted phi_m makes the bracket the result.
+TEST(Phim, SeedsGiveABracketWithItsFractionsAndATotalError) {
+  json table;
+  table["points"] = json::array();
+  auto add = [&](double phi, int seed, bool flows, double eta) {
+    json e;
+    e["name"] = "p";
+    e["status"] = flows ? "done" : "jammed";
+    e["case"] = {{"model", "pairwise"}, {"control", "stress"}, {"phi", phi}, {"mu_s", 0.5}, {"g_adh", 1.0},
+                 {"shear_stress", 1.0}};
+    e["summary"] = nullptr;
+    if (flows) e["summary"] = {{"phi", phi + 0.001 * seed}, {"eta_r", {{"mean", eta}, {"sem", 0.01 * eta}}}};
+    table["points"].push_back(e);
+  };
+  // eta_r of Maron-Pierce (alpha 1, phi_m 0.55) with a seed-to-seed scatter of +-5%, far above the 1% block errors.
+  for (double phi : {0.40, 0.44, 0.47, 0.49})
+    for (int seed = 1; seed <= 3; ++seed) add(phi, seed, true, maron_pierce(phi, 1.0, 0.55) * (1.0 + 0.05 * (seed - 2)));
+  add(0.50, 1, true, maron_pierce(0.50, 1.0, 0.55));
+  add(0.50, 2, true, maron_pierce(0.50, 1.0, 0.55));
+  add(0.50, 3, false, 0.0);
+  add(0.52, 1, true, maron_pierce(0.52, 1.0, 0.55));
+  add(0.52, 2, false, 0.0);
+  add(0.52, 3, false, 0.0);
+  for (int seed = 1; seed <= 3; ++seed) add(0.56, seed, false, 0.0);
+  PhimOptions o;
+  o.resamples = 200;
+  const json r = fit_phim(table, o);
+  ASSERT_EQ(r["fits"].size(), 1u);
+  const json& f = r["fits"][0];
+  EXPECT_EQ(f["bracket"], json::parse("[0.5, 0.52]"));
+  EXPECT_EQ(f["bracket_seeds"], json::parse("[3, 3]"));
+  EXPECT_NEAR(f["bracket_flowing_fraction"][0].get<double>(), 2.0 / 3.0, 1e-12);
+  EXPECT_NEAR(f["bracket_flowing_fraction"][1].get<double>(), 1.0 / 3.0, 1e-12);
+  // One point per phi (0.40, 0.44, 0.47, 0.49, 0.50 and the lone flowing seed of 0.52), the 5% scatter in the errors.
+  ASSERT_EQ(f["points"], 6);
+  const json& at040 = f["data"][0];
+  EXPECT_NEAR(at040[1].get<double>(), maron_pierce(0.40, 1.0, 0.55), 1e-9);
+  EXPECT_NEAR(at040[2].get<double>(), 0.05 * maron_pierce(0.40, 1.0, 0.55) / std::sqrt(3.0), 1e-9);
+  ASSERT_TRUE(f["phi_m"].is_number());
+  EXPECT_GE(f["phi_m_err_total"].get<double>(), f["phi_m_err_lopo"].get<double>());
+  EXPECT_GE(f["phi_m_err_total"].get<double>(), f["phi_m_err"].get<double>());
+  // The jammed seed at 0.50 lies below phi_m ~ 0.55: the fit is contradicted, the bracket is the result.
+  EXPECT_FALSE(f["jammed_below_phi_m"].empty());
+  EXPECT_EQ(f["result"], "bracket");
+}
