@@ -198,18 +198,15 @@ TEST(Sweep, TheSearchBisectsToTheBoundaryWithSeeds) {
   const Result b = run({"sweep", below, "--out", fresh_dir("search_below")});
   EXPECT_EQ(b.code, 0) << b.err;
   EXPECT_NE(b.out.find("below lo: particles.phi = 0.4 already jams"), std::string::npos) << b.out;
-  expect_input_error({"sweep", write_case("bad_search.yaml", body + "search: {key: particles.phi, lo: 0.5, hi: 0.1, "
-                                                                    "tolerance: 0.05}\n"), "--list"},
-                     "search: lo = 0.5 must be below hi = 0.1", "");
-  expect_input_error({"sweep", write_case("bad_search2.yaml", body + "search: {key: particles.phi, lo: 0.1, hi: 0.5, "
-                                                                     "tolerance: 0.05, seeds: 0}\n"), "--list"},
-                     "search.seeds: must be a whole number from 1 to 100, not 0", "");
-  expect_input_error({"sweep", write_case("bad_search3.yaml", body + "search: {key: particles.phi, lo: 0.1, hi: 0.5, "
-                                                                     "tolerance: -1}\n"), "--list"},
-                     "search.tolerance: must be > 0", "");
-  expect_input_error({"sweep", write_case("bad_search4.yaml", body + "search: {key: particles.phi, lo: 0.1, hi: 0.5, "
-                                                                     "toleranse: 0.1}\n"), "--list"},
-                     "search.toleranse: unknown key (did you mean 'tolerance'?)", "");
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"lo: 0.5, hi: 0.1, tolerance: 0.05", "search: lo = 0.5 must be below hi = 0.1"},
+      {"lo: 0.1, hi: 0.5, tolerance: 0.05, seeds: 0", "search.seeds: must be a whole number from 1 to 100, not 0"},
+      {"lo: 0.1, hi: 0.5, tolerance: -1", "search.tolerance: must be > 0"},
+      {"lo: 0.1, hi: 0.5, toleranse: 0.1", "search.toleranse: unknown key (did you mean 'tolerance'?)"}};
+  for (const auto& [fields, message] : bad)
+    expect_input_error(
+        {"sweep", write_case("bad_search.yaml", body + "search: {key: particles.phi, " + fields + "}\n"), "--list"},
+        message, "");
 }
 
 TEST(Sweep, ChangedCampaignIsRefusedAddedPointsRun) {
