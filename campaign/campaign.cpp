@@ -95,13 +95,13 @@ void append_product(const YAML::Node& vary, const std::string& where, std::vecto
 Search read_search(const YAML::Node& n) {
   if (!n.IsMap())
     throw InputError("search: must be a mapping {key: particles.phi, lo: 0.40, hi: 0.62, tolerance: 0.01, seeds: 3}");
-  const std::vector<std::string> allowed = {"key", "lo", "hi", "tolerance", "seeds"};
+  const std::vector<std::string> allowed = {"key", "lo", "hi", "tolerance", "seeds", "from_flowing"};
   for (const auto& kv : n) {
     const std::string k = kv.first.Scalar();
     if (std::find(allowed.begin(), allowed.end(), k) == allowed.end()) {
       const std::string near = io::closest_word(k, allowed);
       throw InputError("search." + k + ": unknown key" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
-                       "; allowed: key, lo, hi, tolerance, seeds");
+                       "; allowed: key, lo, hi, tolerance, seeds, from_flowing");
     }
   }
   auto number = [&](const char* k) {
@@ -126,6 +126,10 @@ Search read_search(const YAML::Node& n) {
   if (!(seeds >= 1.0) || seeds != std::floor(seeds) || seeds > 100)
     throw InputError("search.seeds: must be a whole number from 1 to 100, not " + yaml_text(n["seeds"]));
   s.seeds = static_cast<int>(seeds);
+  if (n["from_flowing"]) {
+    s.from_flowing = number("from_flowing");
+    if (!(s.from_flowing >= 0.0)) throw InputError("search.from_flowing: must be >= 0 (0: never)");
+  }
   return s;
 }
 
@@ -144,8 +148,9 @@ std::vector<std::string> Campaign::overrides(const Point& p) const {
   return out;
 }
 
-Point Campaign::make_point(const std::vector<Assignment>& parameters) const {
+Point Campaign::make_point(const std::vector<Assignment>& parameters, const std::vector<Assignment>& unnamed) const {
   Point p{point_name(parameters, varied_keys), parameters, ""};
+  p.parameters.insert(p.parameters.end(), unnamed.begin(), unnamed.end());
   try {
     p.identity = io::result_identity(io::load_case(case_file, overrides(p)));
   } catch (const InputError& e) {

@@ -27,6 +27,9 @@ struct Search {
   double lo = 0.0, hi = 0.0;  // the range searched
   double tolerance = 0.0;    // the search stops once the bracket is at most this wide
   int seeds = 1;
+  // Values at most this far above one where the same seed flowed start from that run's last state, rescaled
+  // (particles.initial.compress); 0: every point starts from a generated packing.
+  double from_flowing = 0.0;
   // Values tried lie on a grid of tolerance / 2 from lo, so that they have short, stable names.
   double grid() const { return tolerance / 2.0; }
 };
@@ -45,8 +48,9 @@ struct Campaign {
   // The `--set` list that makes a point's case from the base case: `set`, then the point's parameters.
   std::vector<std::string> overrides(const Point& p) const;
   const Point* find(const std::string& name) const;  // nullptr when absent
-  // The point of these parameters (named as the campaign names points, validated as a case).
-  Point make_point(const std::vector<Assignment>& parameters) const;
+  // The point of these parameters (named as the campaign names points, validated as a case); `unnamed` are further
+  // overrides that do not enter its name (how a searched point starts).
+  Point make_point(const std::vector<Assignment>& parameters, const std::vector<Assignment>& unnamed = {}) const;
 };
 
 // A searched value as it goes into a point (6 significant digits: 0.515, 0.4).

@@ -32,17 +32,35 @@ std::vector<GroupSearch> plan_search(const Campaign& c, const fs::path& out_dir)
     GroupSearch g;
     g.group = group;
     g.name = group.empty() ? "base" : c.make_point(group).name;
-    // A value's seeds, read from their records; returns false when one of them failed (the search cannot go on).
+    // A value's seeds, read from their records (a failed one stops the search of the group). A seed starts from
+    // its own last flowing state when that is at most from_flowing below (issue 34: dense points start from a state
+    // that flowed, not from a packing that may be arrested before it ever flows).
     auto visit = [&](double v) -> const SearchedValue* {
       SearchedValue sv;
       sv.value = v;
       for (int seed = 1; seed <= s.seeds; ++seed) {
-        const Point p = c.make_point(at_value(group, s, v, seed));
-        sv.points.push_back(p.name);
+        const Point* flowing = nullptr;
+        double below = -1.0;
+        for (const SearchedValue& earlier : g.values)
+          if (earlier.value < v && earlier.value > below && v - earlier.value <= s.from_flowing * (1.0 + 1e-9) &&
+              v <= 1.1 * earlier.value &&  // within what particles.initial.compress takes
+              read_record(point_dir(out_dir, earlier.points[static_cast<std::size_t>(seed - 1)])).status == "done") {
+            below = earlier.value;
+            flowing = &earlier.points[static_cast<std::size_t>(seed - 1)];
+          }
+        std::vector<Assignment> start;
+        if (flowing)
+          start = {{"particles.initial",
+                    "{from: file, file: " + fs::absolute(point_dir(out_dir, *flowing) / "run.h5").lexically_normal().string() +
+                        ", compress: true}"},
+                   {"particles.count", "null"},
+                   {"box", "null"}};
+        const Point p = c.make_point(at_value(group, s, v, seed), start);
         const std::string status = read_record(point_dir(out_dir, p)).status;
         if (status == "done") ++sv.flowed;
         else if (status == "jammed") ++sv.jammed;
         else if (status == "failed") g.state = "stopped: point " + p.name + " failed (see its log; --retry-failed)";
+        sv.points.push_back(p);
       }
       g.values.push_back(sv);
       return &g.values.back();
@@ -101,9 +119,7 @@ Campaign with_search_points(const Campaign& c, const std::vector<GroupSearch>& p
   Campaign out = c;
   out.points.clear();
   for (const GroupSearch& g : plan)
-    for (const SearchedValue& v : g.values)
-      for (int seed = 1; seed <= c.search->seeds; ++seed)
-        out.points.push_back(c.make_point(at_value(g.group, *c.search, v.value, seed)));
+    for (const SearchedValue& v : g.values) out.points.insert(out.points.end(), v.points.begin(), v.points.end());
   return out;
 }
 

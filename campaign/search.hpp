@@ -14,7 +14,7 @@ namespace suspend::campaign {
 struct SearchedValue {
   double value = 0.0;
   int flowed = 0, jammed = 0;  // seeds that ended done / jammed
-  std::vector<std::string> points;  // its points' names, seed 1 first
+  std::vector<Point> points;        // its points, seed 1 first
   bool decided() const;             // every seed ended (done or jammed)
   bool flows() const;               // decided, and a strict majority of the seeds flowed
 };

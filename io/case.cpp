@@ -69,6 +69,7 @@ void read_particles(SchemaReader r, Case& c) {
     if (!std::filesystem::is_regular_file(f))
       init.fail("file", "'" + p.initial_file + "' does not exist or is not a file");
     p.initial_file = f.lexically_normal().string();
+    p.compress = init.boolean("compress", false);
   }
   p.min_gap = init.number("min_gap", p.min_gap, Range::closed(0.0, 0.5));
   init.finish();
@@ -145,6 +146,9 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     }
     b.finish();
   }
+  if (c.particles.compress && (c.box || c.particles.count))
+    throw InputError("particles.initial.compress: the file's particles are rescaled to particles.phi, so their count "
+                     "and box follow from the file; leave particles.count and box out");
   if (c.box && c.particles.count)
     throw InputError("particles.count and box are both given; give one of them (the other follows from phi)");
   if (!c.box && !c.particles.count && c.particles.initial != "file")
@@ -351,7 +355,10 @@ YAML::Node to_yaml(const Case& c) {
     p["species"].push_back(sp);
   }
   p["initial"]["from"] = c.particles.initial;
-  if (c.particles.initial == "file") p["initial"]["file"] = c.particles.initial_file;
+  if (c.particles.initial == "file") {
+    p["initial"]["file"] = c.particles.initial_file;
+    if (c.particles.compress) p["initial"]["compress"] = true;
+  }
   p["initial"]["min_gap"] = number_node(c.particles.min_gap);
   if (c.box) {
     n["box"]["length"]["x"] = number_node(c.box->x());

@@ -21,6 +21,7 @@ struct ParticlesCase {
   std::vector<Species> species;
   std::string initial = "random";  // "random" or "file"
   std::string initial_file;        // x y z radius table, or an HDF5 run/checkpoint
+  bool compress = false;           // rescale the file's state uniformly to phi (a flowing state made denser)
   double min_gap = 1.0e-3;         // smallest surface gap of a generated packing (a_1)
 };
 

@@ -202,18 +202,36 @@ InitialConfiguration build_initial_configuration(const Case& c) {
       ic.box = c.box ? Box(*c.box) : Box(Vec3::Constant(std::cbrt(vol / c.particles.phi)));
     }
     // Lees-Edwards: the sheared state goes on from its own offset, so its images (and contacts) stay where they were.
-    if (stored.shear_offset) ic.box.set_offset_origin(*stored.shear_offset);
-    else if (stored.strain) ic.box.set_offset_origin(*stored.strain * ic.box.length().y());
+    double offset = stored.shear_offset ? *stored.shear_offset : stored.strain ? *stored.strain * ic.box.length().y() : 0.0;
+    std::string compressed;
+    if (c.particles.compress) {
+      // A uniform rescaling of the box, the positions and the offset (the same sheared arrangement, every
+      // centre-to-centre distance times s) to the requested phi; the run's first strain relaxes the overlaps it
+      // makes (docs/campaigns.md, "Searching for phi_m").
+      const double from_phi = vol / ic.box.volume();
+      if (std::abs(c.particles.phi / from_phi - 1.0) > 0.1)
+        throw InputError("particles.initial.compress: from phi " + exact(from_phi) + " to " + exact(c.particles.phi) +
+                         " is more than 10%; the rescaled spheres would overlap far beyond their roughness");
+      const double s = std::cbrt(from_phi / c.particles.phi);
+      ic.box = Box(ic.box.length() * s);
+      for (Vec3& r : ic.particles.position) r *= s;
+      offset *= s;
+      std::ostringstream o;
+      o << ", rescaled by " << s << " from phi " << from_phi << " to " << c.particles.phi;
+      compressed = o.str();
+    }
+    if (stored.shear_offset || stored.strain) ic.box.set_offset_origin(offset);
     for (Vec3& r : ic.particles.position) ic.box.wrap(r);
     ic.origin = "loaded " + std::to_string(ic.particles.size()) + " particles from " + f;
     if (stored.box) {
       std::ostringstream o;
-      o << " (its box and Lees-Edwards offset " << ic.box.offset_origin() << ")";
+      o << " (its box and Lees-Edwards offset " << ic.box.offset_origin() << compressed << ")";
       ic.origin += o.str();
     }
     ic.phi = ic.particles.volume() / ic.box.volume();
     // The phi the snapshot's run asked for names the same state as the phi it reached.
-    const bool requested = stored.requested_phi && std::abs(*stored.requested_phi - c.particles.phi) < 1e-12;
+    const bool requested = c.particles.compress ||
+                           (stored.requested_phi && std::abs(*stored.requested_phi - c.particles.phi) < 1e-12);
     if (!requested && std::abs(ic.phi - c.particles.phi) > 1e-3)
       throw InputError("particles.phi = " + exact(c.particles.phi) + " does not match the file's particles in this box (phi = " +
                        exact(ic.phi) + (stored.requested_phi ? ", asked for as " + exact(*stored.requested_phi) : std::string()) +

@@ -453,6 +453,22 @@ TEST(Cli, AShearedSnapshotStartsWhereItsRunEnded) {
   EXPECT_EQ(h5::shape_of(fb.id(), start + "/contact_pairs")[0], contacts);
   expect_input_error(plus({"run", restart_case, "--out", c, "--set", "particles.phi=0.5"}, from),
                      "particles.phi = 0.5 does not match", c);
+  // Rescaled to a denser phi (particles.initial.compress): the same arrangement in a smaller box, offset included.
+  const std::string d = fresh_dir("compressed");
+  const std::vector<std::string> compress = {"--threads", "1", "--quiet", "--set", "particles.count=null", "--set",
+                                             "particles.initial={from: file, file: " + a + "/run.h5, compress: true}",
+                                             "--set", "run.strain=0.02", "--set", "run.average_from=0"};
+  ASSERT_EQ(run(plus({"run", restart_case, "--out", d, "--set", "particles.phi=0.47"}, compress)).code, 0);
+  h5::File fd = h5::File::open(d + "/run.h5", false);
+  const double s = h5::read_doubles(fd.id(), start + "/box")[0] / h5::read_doubles(fa.id(), end + "/box")[0];
+  EXPECT_NEAR(s * s * s, 0.4543921456 / 0.47, 1e-9);
+  EXPECT_NEAR(h5::double_attribute(fd.id(), start, "shear_offset"), s * h5::double_attribute(fa.id(), end, "shear_offset"),
+              1e-12);
+  expect_input_error(plus({"run", restart_case, "--out", c, "--set", "particles.phi=0.55"}, compress),
+                     "particles.initial.compress: from phi 0.4543921455967", c);
+  expect_input_error(plus({"run", restart_case, "--out", c, "--set", "particles.phi=0.47", "--set", "box={cube: 7}"},
+                          compress),
+                     "particles.initial.compress: the file's particles are rescaled", c);
 }
 
 // Snapshots list the contacts, and only them: as many rows as the `contacts` series counts at the same step, each

@@ -193,6 +193,28 @@ TEST(Sweep, TheSearchBisectsToTheBoundaryWithSeeds) {
   ASSERT_EQ(run({"sweep", file, "--out", killed, "--jobs", "2", "--quiet"}).code, 0);
   EXPECT_EQ(table(killed), t);
 
+  // from_flowing: 0.03: the point at 0.32 starts from its seed's last state at 0.3 when that seed flowed there,
+  // rescaled to 0.32 (0.35 is too far from 0.3 and starts from a packing).
+  const std::string dense = write_case(
+      "from_flowing.yaml",
+      body + "search: {key: particles.phi, lo: 0.3, hi: 0.4, tolerance: 0.02, seeds: 3, from_flowing: 0.03}\n");
+  const std::string fd = fresh_dir("search_from_flowing");
+  const Result rd = run({"sweep", dense, "--out", fd, "--jobs", "2"});
+  ASSERT_EQ(rd.code, 0) << rd.err;
+  int rescaled = 0;
+  const json td = table(fd);
+  for (const json& p : td["points"]) {
+    const bool from_file = p["parameters"].contains("particles.initial");
+    const std::string log = read_text(fd + "/points/" + p["name"].get<std::string>() + "/log.txt");
+    EXPECT_EQ(from_file, log.find("rescaled by") != std::string::npos) << p["name"] << log.substr(0, 300);
+    if (from_file) {
+      ++rescaled;
+      EXPECT_EQ(p["case"]["phi"], 0.32) << p.dump();
+      EXPECT_NE(log.find("from phi 0.3"), std::string::npos) << log.substr(0, 300);
+    }
+  }
+  EXPECT_GE(rescaled, 2) << "the seeds that flowed at 0.3 start 0.32 from there";
+
   const std::string below = write_case("below.yaml", body + "search: {key: particles.phi, lo: 0.4, hi: 0.5, "
                                                             "tolerance: 0.02}\n");
   const Result b = run({"sweep", below, "--out", fresh_dir("search_below")});
