@@ -44,6 +44,8 @@ std::vector<GroupSearch> plan_search(const Campaign& c, const fs::path& out_dir)
         for (const SearchedValue& earlier : g.values)
           if (earlier.value < v && earlier.value > below && v - earlier.value <= s.from_flowing * (1.0 + 1e-9) &&
               v <= 1.1 * earlier.value &&  // within what particles.initial.compress takes
+              // a folder restored from a table (tools/restore_campaign.py) has the record, not the run
+              fs::exists(point_dir(out_dir, earlier.points[static_cast<std::size_t>(seed - 1)]) / "run.h5") &&
               read_record(point_dir(out_dir, earlier.points[static_cast<std::size_t>(seed - 1)])).status == "done") {
             below = earlier.value;
             flowing = &earlier.points[static_cast<std::size_t>(seed - 1)];
