@@ -4,9 +4,8 @@
 # RESULTS/phim.json, phim.csv and phim.txt from `suspend phim`.
 # usage: tools/publish_campaign.sh CAMPAIGN_DIR RESULTS_DIR [SUSPEND (default build/bin/suspend)]
 set -euo pipefail
-if [[ $# -lt 2 || ${1:-} == -h || ${1:-} == --help ]]; then
-  awk 'NR > 1 && !/^#/ {exit} NR > 1 {sub(/^# ?/, ""); print}' "$0"; [[ $# -ge 2 ]]; exit $?
-fi
+if [[ ${1:-} == -h || ${1:-} == --help ]]; then awk 'NR > 1 && !/^#/ {exit} NR > 1 {sub(/^# ?/, ""); print}' "$0"; exit 0; fi
+if [[ $# -lt 2 ]]; then echo "usage: tools/publish_campaign.sh CAMPAIGN_DIR RESULTS_DIR [SUSPEND]" >&2; exit 2; fi
 root=$(cd "$(dirname "$0")/.." && pwd)
 from=$1 to=$2 suspend=${3:-$root/build/bin/suspend}
 if [[ ! -f $from/campaign.json ]]; then echo "error: $from/campaign.json not found (a campaign folder of suspend sweep)" >&2; exit 2; fi
