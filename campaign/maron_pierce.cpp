@@ -105,9 +105,57 @@ std::optional<MaronPierceFit> fit_maron_pierce(const std::vector<ViscosityPoint>
     const Best d = best_fit(draw);
     sp += d.phi_m, spp += d.phi_m * d.phi_m, sa += d.alpha, saa += d.alpha * d.alpha;
   }
-  const double n = resamples;
-  f.phi_m_err = std::sqrt(std::max(0.0, spp / n - (sp / n) * (sp / n)));
-  f.alpha_err = std::sqrt(std::max(0.0, saa / n - (sa / n) * (sa / n)));
+  const double n = std::max(1, resamples);
+  f.phi_m_err = resamples > 0 ? std::sqrt(std::max(0.0, spp / n - (sp / n) * (sp / n))) : 0.0;
+  f.alpha_err = resamples > 0 ? std::sqrt(std::max(0.0, saa / n - (sa / n) * (sa / n))) : 0.0;
+  return f;
+}
+
+std::optional<FreeExponentFit> fit_free_exponent(const std::vector<ViscosityPoint>& points, std::string* why) {
+  if (points.size() < 4) {
+    if (why) *why = std::to_string(points.size()) + " flowing point(s); a free exponent needs at least 4";
+    return std::nullopt;
+  }
+  if (!fit_maron_pierce(points, why, 0)) return std::nullopt;  // the same checks of the data
+  double phi_max = 0.0;
+  for (const ViscosityPoint& q : points) phi_max = std::max(phi_max, q.phi);
+  // chi^2 at (t, n), phi_m = phi_max + exp(t), with the optimal alpha.
+  auto chi2 = [&](double t, double n, double* alpha) {
+    const double phi_m = phi_max + std::exp(t);
+    double ef = 0.0, ff = 0.0;
+    for (const ViscosityPoint& q : points) {
+      const double f = std::pow(1.0 - q.phi / phi_m, -n), w = 1.0 / (q.sem * q.sem);
+      ef += q.eta * f * w, ff += f * f * w;
+    }
+    const double a = ef / ff;
+    double c = 0.0;
+    for (const ViscosityPoint& q : points) {
+      const double r = (q.eta - a * std::pow(1.0 - q.phi / phi_m, -n)) / q.sem;
+      c += r * r;
+    }
+    if (alpha) *alpha = a;
+    return c;
+  };
+  const double t_lo = std::log(1e-5), t_hi = std::log(1.0 - phi_max);
+  double best_t = t_lo, best_n = 2.0, best = chi2(best_t, best_n, nullptr);
+  for (int i = 0; i <= 200; ++i)
+    for (int j = 0; j <= 70; ++j) {
+      const double t = t_lo + (t_hi - t_lo) * i / 200.0, n = 0.5 + 0.05 * j;
+      if (const double c = chi2(t, n, nullptr); c < best) best = c, best_t = t, best_n = n;
+    }
+  // Refinement: coordinate steps that halve until they are below 1e-10.
+  for (double dt = (t_hi - t_lo) / 200.0, dn = 0.05; dt > 1e-10 || dn > 1e-10; dt *= 0.5, dn *= 0.5)
+    for (bool moved = true; moved;) {
+      moved = false;
+      for (const auto& [ddt, ddn] : {std::pair{dt, 0.0}, {-dt, 0.0}, {0.0, dn}, {0.0, -dn}}) {
+        const double t = std::clamp(best_t + ddt, t_lo, t_hi), n = std::clamp(best_n + ddn, 0.1, 10.0);
+        if (const double c = chi2(t, n, nullptr); c < best) best = c, best_t = t, best_n = n, moved = true;
+      }
+    }
+  FreeExponentFit f;
+  f.phi_m = phi_max + std::exp(best_t);
+  f.exponent = best_n;
+  f.chi2_reduced = chi2(best_t, best_n, &f.alpha) / static_cast<double>(points.size() - 3);
   return f;
 }
 

@@ -30,6 +30,15 @@ struct MaronPierceFit {
 std::optional<MaronPierceFit> fit_maron_pierce(const std::vector<ViscosityPoint>& points, std::string* why = nullptr,
                                                int resamples = 1000, std::uint64_t seed = 1);
 
+// eta_r = alpha (1 - phi/phi_m)^-n with a free exponent n (paper 004 mentions it for mu_s = 0): the best (alpha,
+// phi_m, n) by weighted least squares (alpha linear, phi_m and n scanned then refined), and chi^2 / (points - 3); no
+// bootstrap: it describes the points near phi_m, the Maron-Pierce fit and the bracket carry the errors. nullopt with
+// `why` set below four points or on degenerate data.
+struct FreeExponentFit {
+  double phi_m = 0.0, exponent = 0.0, alpha = 0.0, chi2_reduced = 0.0;
+};
+std::optional<FreeExponentFit> fit_free_exponent(const std::vector<ViscosityPoint>& points, std::string* why = nullptr);
+
 // Paper 004 eq. 23.
 inline double maron_pierce(double phi, double alpha, double phi_m) {
   const double x = 1.0 - phi / phi_m;

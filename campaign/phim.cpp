@@ -139,6 +139,9 @@ json fit_phim(const json& table, const PhimOptions& o) {
             lopo = std::max(lopo, std::abs(without->phi_m - fit->phi_m));
         }
       f["phi_m_err_lopo"] = g.points.size() >= 4 ? json(lopo) : json();
+      if (const auto free = fit_free_exponent(g.points))
+        f["free_exponent"] = {{"phi_m", free->phi_m}, {"exponent", free->exponent}, {"alpha", free->alpha},
+                              {"chi2_reduced", free->chi2_reduced}};
       f["phi_m_err_total"] = std::hypot(fit->phi_m_err, lopo);
     } else {
       f["phi_m"] = nullptr;

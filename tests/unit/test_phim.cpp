@@ -200,3 +200,22 @@ TEST(Phim, SeedsGiveABracketWithItsFractionsAndATotalError) {
   EXPECT_FALSE(f["jammed_below_phi_m"].empty());
   EXPECT_EQ(f["result"], "bracket");
 }
+
+// The free-exponent law eta_r = alpha (1 - phi/phi_m)^-n recovers n, phi_m and alpha of exact data, and needs four
+// points (issue 34: a description of the points near phi_m beside Maron-Pierce's n = 2).
+TEST(MaronPierce, AFreeExponentIsRecoveredFromExactData) {
+  std::vector<ViscosityPoint> p;
+  for (double phi : {0.40, 0.44, 0.48, 0.51, 0.53}) {
+    const double eta = 0.7 * std::pow(1.0 - phi / 0.57, -2.6);
+    p.push_back({phi, eta, 0.01 * eta});
+  }
+  const auto f = fit_free_exponent(p);
+  ASSERT_TRUE(f);
+  EXPECT_NEAR(f->exponent, 2.6, 1e-4);
+  EXPECT_NEAR(f->phi_m, 0.57, 1e-5);
+  EXPECT_NEAR(f->alpha, 0.7, 1e-3);
+  EXPECT_LT(f->chi2_reduced, 1e-6);
+  std::string why;
+  EXPECT_FALSE(fit_free_exponent({p.begin(), p.begin() + 3}, &why));
+  EXPECT_NE(why.find("at least 4"), std::string::npos) << why;
+}
