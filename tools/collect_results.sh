@@ -1,22 +1,30 @@
 #!/usr/bin/env bash
-# Copies the campaign tables of the raw runs (ignored folder runs/) into results/phim/METHOD/, fits them with
-# `suspend phim` (all points, and phi >= 0.45 only as paper 004 does for mu_s <= 0.1: METHOD/from_phi0.45/) and
-# redraws the figures, so the committed results follow the campaigns as they fill.
+# Copies the campaign tables of the raw runs (ignored folder runs/) into results/phim/METHOD/ (the phi_m campaigns
+# and issue 34's boundary search), fits them with `suspend phim` (all points, and phi >= 0.45 only as paper 004 does
+# for mu_s <= 0.1: METHOD/from_phi0.45/) and redraws the figures, so the committed results follow the campaigns as
+# they fill; a table already committed is fitted again with the current `suspend phim`.
 # usage: tools/collect_results.sh [RUNS_DIR=runs] [SUSPEND=build/bin/suspend]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 runs=${1:-$root/runs}
 suspend=${2:-$root/build/bin/suspend}
-for method in pairwise fcm; do
-  table="$runs/phim_$method/campaign.json"
-  [ -f "$table" ] || continue
+# name in runs/ | folder under results/phim/
+for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise_boundary"; do
+  IFS='|' read -r name method <<< "$entry"
   out="$root/results/phim/$method"
-  mkdir -p "$out"
-  cp "$table" "$runs/phim_$method/campaign.csv" "$out/"
-  "$suspend" phim "$out" > "$out/phim.txt"
+  if [ -f "$runs/$name/campaign.json" ]; then
+    mkdir -p "$out"
+    for f in campaign.json campaign.csv; do  # paths relative to the repository, not this machine's checkout
+      sed "s|$root/||g" "$runs/$name/$f" > "$out/$f.part" && mv "$out/$f.part" "$out/$f"
+    done
+  fi
+  [ -f "$out/campaign.json" ] || continue
+  (cd "$root" && "$suspend" phim "results/phim/$method" > "results/phim/$method/phim.txt")
   cat "$out/phim.txt"
+  [ "$method" = pairwise_boundary ] && continue
   # paper 004 fits mu_s <= 0.1 on phi >= 0.45 only, nearer phi_m (section III C)
   mkdir -p "$out/from_phi0.45"
-  "$suspend" phim "$out" --min-phi 0.45 -o "$out/from_phi0.45" > "$out/from_phi0.45/phim.txt"
+  (cd "$root" && "$suspend" phim "results/phim/$method" --min-phi 0.45 -o "results/phim/$method/from_phi0.45" \
+    > "results/phim/$method/from_phi0.45/phim.txt")
 done
 /usr/bin/python3 "$root/tools/phim_figures.py" "$root/results/phim"

@@ -24,6 +24,7 @@ PAPER_ALPHA = (0.65, 1.0)  # paper 004's Maron-Pierce prefactors (Fig. 32, resul
 # A Maron-Pierce fit with chi^2/dof above this is drawn open in Fig. 15: the errors are already inflated by
 # sqrt(chi^2/dof), but above ~10 the misfit is systematic (the data curve away from the form), not noise.
 POOR_FIT_CHI2 = 10.0
+# The methods drawn (results/phim/pairwise_boundary, the running boundary search, joins them once it has converged).
 METHOD_NAME = {"pairwise": "pairwise", "fcm": "FCM"}
 METHOD_STYLE = {"pairwise": dict(marker="o", linestyle="-", fillstyle="full"),
                 "fcm": dict(marker="s", linestyle="--", fillstyle="none")}
@@ -57,7 +58,7 @@ def load(results):
     for name in sorted(os.listdir(results)):
         folder = os.path.join(results, name)
         table, fits = os.path.join(folder, "campaign.json"), os.path.join(folder, "phim.json")
-        if os.path.isfile(table) and os.path.isfile(fits):
+        if name in METHOD_NAME and os.path.isfile(table) and os.path.isfile(fits):
             with open(table) as t, open(fits) as f:
                 methods[name] = (json.load(t), json.load(f))
     return methods
@@ -96,25 +97,23 @@ def sigma_of(fit):
 
 
 def bracket(fit):
-    """(densest flowing phi, least dense jammed phi) when a jammed point lies below the fitted phi_m (or there is no
-    fit): the campaign's data then place phi_m in that interval, and the fit, which extrapolates past them, is not the
-    result."""
-    jammed = fit.get("jammed_phi") or []
-    if not jammed or (fit.get("phi_m") is not None and not fit.get("jammed_below_phi_m")):
-        return None
-    hi = min(jammed)
-    below = [p[0] for p in fit.get("data") or [] if p[0] < hi]
-    return (max(below), hi) if below else None
+    """The group's bracket (highest requested phi that flowed, lowest that jammed) when `suspend phim` made it the
+    result (no fit, or a fit the data contradict), else None: one source for the figures, phim.json and the page's
+    tables (tools/phim_table.py)."""
+    if fit.get("result") == "bracket" and fit.get("bracket"):
+        return tuple(fit["bracket"])
+    return None
 
 
 def drawn_phi_m(fit):
     """What Fig. 15 draws for a group: (phi_m, its error bar, the bracket or None); the bracket's middle and half
-    width where the data contradict the fit, the fit otherwise; None for a group with neither."""
+    width where the data contradict the fit, the fit with its total error (bootstrap and leave-one-point-out)
+    otherwise; None for a group with neither."""
     b = bracket(fit)
     if b:
         return 0.5 * (b[0] + b[1]), 0.5 * (b[1] - b[0]), b
     if fit.get("phi_m") is not None:
-        return fit["phi_m"], fit["phi_m_err"], None
+        return fit["phi_m"], fit.get("phi_m_err_total", fit["phi_m_err"]), None
     return None
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Resumes the project's long campaigns on this machine, in the background, one after the other on both cores:
-# issue 34's boundary search (runs/pairwise_boundary, cases/phim/pairwise_boundary.yaml; its table and fits go to
-# results/phim/pairwise_boundary as they fill);
+# issue 34's boundary search (runs/pairwise_boundary, cases/phim/pairwise_boundary.yaml; tools/collect_results.sh
+# copies its table and fits to results/phim/pairwise_boundary as they fill);
 # issue 35's accuracy ensembles of the default step (runs/step_frictionless, runs/step_ensemble: the packings of
 # each case run by the current engine, set against the same campaigns run by the engine before issue 35,
 # runs/step_*_before with a binary built at 2fbb67f, and runs/step_particles: the former step rule with the current
