@@ -47,7 +47,8 @@ void add_sweep_command(CLI::App& app) {
                 "print each point's state (running ones with their strain and rate) and the time left; starts nothing");
   cmd->add_flag("--quiet,-q", opt->sweep.quiet, "no progress lines");
   cmd->callback([opt, cmd] {
-    campaign::Campaign c = campaign::load_campaign(opt->campaign_file);
+    const campaign::Campaign base = campaign::load_campaign(opt->campaign_file);
+    campaign::Campaign c = base;
     std::vector<campaign::GroupSearch> plan;
     if (c.search) {  // the points the search has decided on so far, from the records under --out
       plan = campaign::plan_search(c, opt->out.empty() ? fs::path("/nonexistent") : fs::path(opt->out));
@@ -72,12 +73,9 @@ void add_sweep_command(CLI::App& app) {
       campaign::print_status(c, opt->out, opt->sweep.jobs);
       return;
     }
-    if (c.search && campaign::launched_by_mpi())
-      throw InputError("search: a boundary search runs under one sweep process (--jobs N), not under mpirun yet; "
-                       "leave mpirun out, or list the points of a finished search as a plain campaign");
-    const int code = c.search && opt->sweep.only_point.empty() ? campaign::run_search_sweep(c, opt->sweep)
-                     : campaign::launched_by_mpi()             ? campaign::run_sweep_mpi(c, opt->sweep)
-                                                               : campaign::run_sweep(c, opt->sweep);
+    const int code = campaign::launched_by_mpi()                   ? campaign::run_sweep_mpi(base, opt->sweep)
+                     : c.search && opt->sweep.only_point.empty() ? campaign::run_search_sweep(base, opt->sweep)
+                                                                 : campaign::run_sweep(c, opt->sweep);
     if (code != 0) std::exit(code);
   });
 }

@@ -342,4 +342,17 @@ TEST(Sweep, MpiRanksGiveTheSameTable) {
                               suspend_bin + " sweep " + file + " --out " + b + " --quiet > " + b + ".log 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << read_text(b + ".log");
   EXPECT_EQ(table(b), table(a));
+  // A boundary search under MPI: the dispatcher replans as points end and hands out the next values.
+  const std::string search = write_case(
+      "mpi_search.yaml", "case: " + restart_case +
+                             "\nset: {particles.count: 40, run.strain: 0.3, run.average_from: 0, flow.control: stress, "
+                             "flow.shear_stress: 1, run.jammed.viscosity: 3, run.jammed.strain: 0.01}\n"
+                             "search: {key: particles.phi, lo: 0.1, hi: 0.5, tolerance: 0.05, seeds: 2}\n");
+  const std::string sa = fresh_dir("mpi_search_a"), sb = fresh_dir("mpi_search_b");
+  ASSERT_EQ(run({"sweep", search, "--out", sa, "--jobs", "2", "--quiet"}).code, 0);
+  const std::string searched = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --oversubscribe -n 3 " +
+                               suspend_bin + " sweep " + search + " --out " + sb + " --quiet > " + sb + ".log 2>&1";
+  ASSERT_EQ(std::system(searched.c_str()), 0) << read_text(sb + ".log");
+  EXPECT_EQ(table(sb), table(sa));
+  EXPECT_EQ(table(sa)["points"].size(), 10u) << "0.1, 0.5, 0.3, 0.4, 0.35 x 2 seeds";
 }
