@@ -12,6 +12,20 @@
 
 namespace suspend::io {
 
+namespace {
+// Who a lock file says holds it. The holder writes that right after it takes the lock: give it a moment when the
+// file is still empty.
+std::string read_holder(const std::filesystem::path& file) {
+  std::string holder;
+  for (int tries = 0; tries < 20 && holder.empty(); ++tries) {
+    if (tries) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::ifstream in(file);
+    std::getline(in, holder);
+  }
+  return holder.empty() ? "another process" : holder;
+}
+}  // namespace
+
 FolderLock::FolderLock(const std::filesystem::path& file, const std::string& purpose) {
   fd_ = ::open(file.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
   if (fd_ < 0) {
@@ -21,13 +35,7 @@ FolderLock::FolderLock(const std::filesystem::path& file, const std::string& pur
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     ::close(fd_);
     fd_ = -1;
-    // The holder writes who it is right after it takes the lock: give it a moment when the file is still empty.
-    for (int tries = 0; tries < 20 && holder_.empty(); ++tries) {
-      if (tries) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-      std::ifstream in(file);
-      std::getline(in, holder_);
-    }
-    if (holder_.empty()) holder_ = "another process";
+    holder_ = read_holder(file);
     return;
   }
   char host[256] = "unknown host";
@@ -49,13 +57,7 @@ std::optional<std::string> FolderLock::holder_of(const std::filesystem::path& fi
   const bool free = ::flock(fd, LOCK_SH | LOCK_NB) == 0;
   ::close(fd);
   if (free) return std::nullopt;
-  std::string holder;
-  for (int tries = 0; tries < 20 && holder.empty(); ++tries) {
-    if (tries) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    std::ifstream in(file);
-    std::getline(in, holder);
-  }
-  return holder.empty() ? "another process" : holder;
+  return read_holder(file);
 }
 
 FolderLock::~FolderLock() {
