@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Copies the campaign tables of the raw runs (ignored folder runs/) into results/phim/METHOD/ (the phi_m campaigns
-# and issue 34's boundary search), fits them with `suspend phim` (all points, and phi >= 0.45 only as paper 004 does
+# and issue 34's boundary searches and FCM seed scatter), fits them with `suspend phim` (all points, and phi >= 0.45 only as paper 004 does
 # for mu_s <= 0.1: METHOD/from_phi0.45/) and redraws the figures, so the committed results follow the campaigns as
 # they fill; a table already committed is fitted again with the current `suspend phim`.
 # usage: tools/collect_results.sh [RUNS_DIR=runs] [SUSPEND=build/bin/suspend]
@@ -9,7 +9,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 runs=${1:-$root/runs}
 suspend=${2:-$root/build/bin/suspend}
 # name in runs/ | folder under results/phim/
-for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise_boundary"; do
+for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise_boundary" \
+    "pairwise_boundary_low_friction|pairwise_boundary_low_friction" "fcm_seed_scatter|fcm_seed_scatter"; do
   IFS='|' read -r name method <<< "$entry"
   out="$root/results/phim/$method"
   if [ -f "$runs/$name/campaign.json" ]; then
@@ -21,7 +22,7 @@ for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise
   [ -f "$out/campaign.json" ] || continue
   (cd "$root" && "$suspend" phim "results/phim/$method" > "results/phim/$method/phim.txt")
   cat "$out/phim.txt"
-  [ "$method" = pairwise_boundary ] && continue
+  [[ $method == pairwise_boundary* || $method == fcm_seed_scatter ]] && continue
   # paper 004 fits mu_s <= 0.1 on phi >= 0.45 only, nearer phi_m (section III C)
   mkdir -p "$out/from_phi0.45"
   (cd "$root" && "$suspend" phim "results/phim/$method" --min-phi 0.45 -o "results/phim/$method/from_phi0.45" \

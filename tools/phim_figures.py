@@ -2,14 +2,15 @@
 """Figures of a phi_m(sigma*) campaign, after paper 004 (Orsi et al.): Fig. 15 (phi_m against sigma*, every method on
 one plot, with the paper's non-adhesive limits; where a jammed point lies below the Maron-Pierce fit, the bracket
 between the densest flowing and the least dense jammed point instead, and no fit; fits with chi^2/dof above
-POOR_FIT_CHI2 open), Fig. 11 (eta_r against phi per sigma*, with the Maron-Pierce fits, dashed where a jammed point
+POOR_FIT_CHI2 open; the boundary searches' brackets hatched, with flowed/seeds at each end, in place of the one-seed
+group they replace), Fig. 11 (eta_r against phi per sigma*, with the Maron-Pierce fits, dashed where a jammed point
 contradicts them), Fig. 14 (eta_r against phi/phi_m, with the paper's Maron-Pierce master curve), Figs. 16-19
 (contact-stress ratios against phi/phi_m) and Fig. 22 (mu(J)). Figure text cites paper 004 as "Orsi et al.".
 
 usage: tools/phim_figures.py RESULTS_DIR [--out FIGURE_DIR]
 
 RESULTS_DIR holds one folder per method (pairwise/, fcm/), each with the campaign.json of `suspend sweep` and the
-phim.json of `suspend phim`. Figures are written as PNG and SVG to FIGURE_DIR (default RESULTS_DIR/figures).
+phim.json of `suspend phim`, and the boundary searches' folders (pairwise_boundary*/). Figures are written as PNG and SVG to FIGURE_DIR (default RESULTS_DIR/figures).
 """
 import json
 import math
@@ -24,8 +25,11 @@ PAPER_ALPHA = (0.65, 1.0)  # paper 004's Maron-Pierce prefactors (Fig. 32, resul
 # A Maron-Pierce fit with chi^2/dof above this is drawn open in Fig. 15: the errors are already inflated by
 # sqrt(chi^2/dof), but above ~10 the misfit is systematic (the data curve away from the form), not noise.
 POOR_FIT_CHI2 = 10.0
-# The methods drawn (results/phim/pairwise_boundary, the running boundary search, joins them once it has converged).
+# The methods drawn. The boundary searches (folders results/phim/pairwise_boundary*, three seeds per phi, issue 34)
+# are drawn in Fig. 15 as searched brackets that replace the one-seed pairwise result of the same group.
 METHOD_NAME = {"pairwise": "pairwise", "fcm": "FCM"}
+SEARCH_PREFIX = "pairwise_boundary"
+SEARCH_OF = "pairwise"  # the method whose groups a search replaces
 METHOD_STYLE = {"pairwise": dict(marker="o", linestyle="-", fillstyle="full"),
                 "fcm": dict(marker="s", linestyle="--", fillstyle="none")}
 METHOD_SHIFT = {"pairwise": 1.0, "fcm": 1.06}  # Fig. 15: FCM drawn 6% to the right of its sigma* for clarity
@@ -54,14 +58,21 @@ def usage(message=None):
 
 
 def load(results):
-    methods = {}
+    """The methods' (campaign table, phim.json) by folder name, and the boundary searches' groups (phim.json fits of
+    every results/phim/pairwise_boundary* folder, merged)."""
+    methods, searched = {}, []
     for name in sorted(os.listdir(results)):
         folder = os.path.join(results, name)
         table, fits = os.path.join(folder, "campaign.json"), os.path.join(folder, "phim.json")
-        if name in METHOD_NAME and os.path.isfile(table) and os.path.isfile(fits):
+        if not (os.path.isfile(table) and os.path.isfile(fits)):
+            continue
+        if name in METHOD_NAME:
             with open(table) as t, open(fits) as f:
                 methods[name] = (json.load(t), json.load(f))
-    return methods
+        elif name.startswith(SEARCH_PREFIX):
+            with open(fits) as f:
+                searched += json.load(f)["fits"]
+    return methods, searched
 
 
 def group_sigma(point):
@@ -134,14 +145,30 @@ def axis_break(ax, x):
                 zorder=4)
 
 
-def figure_15(methods, out):
+def searched_bracket(ax, x, b, fractions, seeds, colour):
+    """A searched bracket: a hatched bar from the densest phi that a majority of seeds flowed at to the least dense
+    that a majority jammed at, each end labelled with flowed/seeds."""
+    from matplotlib.patches import Rectangle
+    ax.add_patch(Rectangle((x / 1.07, b[0]), x * (1.07 - 1 / 1.07), b[1] - b[0], facecolor="white", edgecolor=colour,
+                           hatch="/////", linewidth=1.2, zorder=3))
+    for phi, fraction, n, va in ((b[0], fractions[0], seeds[0], "top"), (b[1], fractions[1], seeds[1], "bottom")):
+        ax.annotate("%d/%d" % (round(fraction * n), n), (x * 1.08, phi), fontsize=5.5, color=colour, va=va,
+                    ha="left", zorder=5)
+
+
+def figure_15(methods, out, searched=()):
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
     fig, ax = plt.subplots(figsize=(8.6, 4.6))
-    drawn = {method: [(f, d) for f in fits["fits"] if (d := drawn_phi_m(f))]
+    searched = [f for f in searched if f.get("bracket")]
+    replaced = {(f["mu_s"], sigma_of(f)) for f in searched}
+    drawn = {method: [(f, d) for f in fits["fits"] if (d := drawn_phi_m(f))
+                      and not (method == SEARCH_OF and (f["mu_s"], sigma_of(f)) in replaced)]
              for method, (_, fits) in methods.items()}
     shown = [pair for pairs in drawn.values() for pair in pairs]
+    shown += [(f, (0.5 * sum(f["bracket"]), 0.5 * (f["bracket"][1] - f["bracket"][0]), tuple(f["bracket"])))
+              for f in searched]
     all_mu = sorted({f["mu_s"] for f, _ in shown} | set(PAPER_NON_ADHESIVE))
     finite_max = max([sigma_of(f) for f, _ in shown if sigma_of(f) < math.inf] + [10.0])
     x_inf = finite_max * 3.0  # where the non-adhesive limit is drawn
@@ -179,6 +206,13 @@ def figure_15(methods, out):
                             markeredgewidth=1.3, zorder=4)
             handles.append(Line2D([], [], color=colour, marker=style["marker"], linestyle=style["linestyle"],
                                   label="%s, $\\mu_s$ = %g" % (method_name(method), mu)))
+    for mu in sorted({f["mu_s"] for f in searched}):
+        colour = mu_colour(mu, all_mu)
+        for f in (f for f in searched if f["mu_s"] == mu):
+            x = x_inf if sigma_of(f) == math.inf else sigma_of(f)
+            searched_bracket(ax, x, f["bracket"], f["bracket_flowing_fraction"], f["bracket_seeds"], colour)
+        handles.append(Patch(facecolor="white", edgecolor=colour, hatch="/////",
+                             label="pairwise, $\\mu_s$ = %g, searched:\nflowed/seeds at each end" % mu))
     if any_poor:
         handles.append(Line2D([], [], color="0.3", marker="o", markerfacecolor="white", linestyle="none",
                               label="open: Maron-Pierce fit with\n$\\chi^2/\\mathrm{dof} > %g$" % POOR_FIT_CHI2))
@@ -369,12 +403,12 @@ def main(argv):
     import matplotlib
     matplotlib.use("Agg")
     matplotlib.rcParams["svg.hashsalt"] = "suspend"
-    methods = load(results)
+    methods, searched = load(results)
     if not methods:
         usage("no METHOD/campaign.json with METHOD/phim.json under '%s' (run suspend sweep, then suspend phim)" % results)
     out = out or os.path.join(results, "figures")
     os.makedirs(out, exist_ok=True)
-    figure_15(methods, out)
+    figure_15(methods, out, searched)
     figure_11(methods, out)
     figure_reduced(methods, out)
     figure_22(methods, out)
