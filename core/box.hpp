@@ -1,4 +1,4 @@
-// Periodic box with Lees-Edwards boundaries (paper 000, eq. 16; DESIGN.md section 3).
+// Periodic box with Lees-Edwards boundaries (paper 000, eq. 16; docs/units.md, Conventions).
 // Flow x, gradient y, vorticity z. The periodic image of the cell at y + L_y is displaced by +shear_offset in x,
 // where shear_offset = origin + strain * L_y wrapped into [-L_x/2, L_x/2). Only the wrapped offset matters for
 // geometry, so the strain may grow without bound. The origin is the offset at strain 0: zero for a generated packing,

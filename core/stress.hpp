@@ -1,4 +1,4 @@
-// Bulk stress split by origin (DESIGN.md section 3): papers plot each contribution separately.
+// Bulk stress split by origin (docs/units.md, Conventions): papers plot each contribution separately.
 #pragma once
 #include <array>
 #include <cstddef>

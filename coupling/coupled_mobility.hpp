@@ -1,6 +1,6 @@
 // The coupled velocity solve: FCM mobility + sub-grid lubrication resistance + given forces, solved matrix-free
 // by right-preconditioned GMRES in one Krylov space for the velocities and the rigidity stresslets together
-// (DESIGN.md section 7; docs/coupling.md).
+// (docs/coupling.md).
 //
 // CONTRACT
 //  * Unknowns x = (dV_i, s_i): dV_i = (U_i - U_inf(x_i), Omega_i - Omega_inf) (6 per particle) and the FCM

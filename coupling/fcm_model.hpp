@@ -1,5 +1,5 @@
-// The FCM-resolved engine's hydrodynamics: the Force Coupling Method plus sub-grid lubrication (DESIGN.md
-// section 7; paper 004 sections II A-II B, II E 2) as a model of the one time step (dem/simulation.hpp), which
+// The FCM-resolved engine's hydrodynamics: the Force Coupling Method plus sub-grid lubrication (docs/coupling.md;
+// paper 004 sections II A-II B, II E 2) as a model of the one time step (dem/simulation.hpp), which
 // supplies the contacts, time-step control, flow control, checks and outputs of the pairwise engine.
 //
 // Force balance per particle (zero inertia): FCM hydrodynamic + sub-grid lubrication + contact = 0, solved for

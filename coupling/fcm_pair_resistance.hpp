@@ -1,5 +1,5 @@
 // The two-sphere resistance that FCM itself resolves, measured with the solver (what the sub-grid correction
-// subtracts; DESIGN.md section 7, docs/references.md "Force Coupling Method facts").
+// subtracts; docs/coupling.md, docs/references.md "Force Coupling Method facts").
 //
 // Method (measure_fcm_pair): spheres a_i at c - (r/2) e_x and a_j at c + (r/2) e_x in a periodic cube of side
 // L = box_factor (a_i + a_j) with the run's grid spacing and truncation. Twelve rigid mobility solves (unit force

@@ -1,5 +1,5 @@
 // Sub-grid lubrication for FCM: per close pair, the exact two-sphere resistance minus the part FCM resolves
-// (DESIGN.md section 7; paper 004 section II A 1 eqs. 6-7 and II B; Orsi, Lobry & Peters 2023).
+// (docs/coupling.md; paper 004 section II A 1 eqs. 6-7 and II B; Orsi, Lobry & Peters 2023).
 //
 // CONTRACT
 //  * Scalars: Delta(s') = w(s') [exact(s') - fcm(s')] for every function of pair_tensors::correction_functions,

@@ -1,7 +1,7 @@
 // The contact stage of a step, shared by every hydrodynamic model (Simulation): neighbour list
 // (rebuilt on its skin criterion), the pairs within the interaction range with their Lees-Edwards geometry, their
 // contact histories, the contact and surface forces of the shared contact module, the overlap check, and after the
-// move the histories stored back (DESIGN.md section 2, run-time flow).
+// move the histories stored back (docs/architecture.md section 2, run-time flow).
 #pragma once
 #include <cstddef>
 #include <optional>

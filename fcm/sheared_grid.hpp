@@ -1,4 +1,4 @@
-// The FCM grid on the Lees-Edwards lattice (DESIGN.md section 6; reference/README.md, "Lees-Edwards").
+// The FCM grid on the Lees-Edwards lattice (docs/fcm.md, "Lees-Edwards").
 // With offset D (wrapped into [-L_x/2, L_x/2)) the disturbance flow is periodic under (L_x, 0, 0), (D, L_y, 0) and
 // (0, 0, L_z). In sheared coordinates x' = x - gamma_t y, gamma_t = D / L_y, it is periodic on a regular box, so
 // it lives on a regular grid: node (i, j, k) sits at x' = i h_x, y = j h_y, z = k h_z, i.e. at the physical point

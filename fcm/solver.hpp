@@ -1,4 +1,4 @@
-// The FCM mobility solver: rigid spheres in a Lees-Edwards periodic box (DESIGN.md section 6; paper 004 section
+// The FCM mobility solver: rigid spheres in a Lees-Edwards periodic box (docs/fcm.md; paper 004 section
 // II B; Maxey & Patel 2001, Lomholt & Maxey 2003, Yeo & Maxey 2010).
 //
 // Units: viscosity eta = 1, lengths in a_1 (smallest radius), so a force F moves an isolated sphere at
@@ -100,7 +100,7 @@ class Solver {
                     std::span<const Vec3> torques, std::span<const Mat3> stresslets, double shear_offset);
 
   // Bulk stress 2 eta E_inf + (1/V) sum_n S_n + (1/V) sum of `moments` (e.g. the interparticle-force
-  // stresslets the caller accumulated), eta = 1 (Batchelor 1970; DESIGN.md section 6). Pressure not included.
+  // stresslets the caller accumulated), eta = 1 (Batchelor 1970; docs/fcm.md). Pressure not included.
   Mat3 bulk_stress(const MobilityResult& result, double shear_rate, std::span<const Mat3> moments = {}) const;
 
   const ShearedGrid& grid() const { return grid_; }

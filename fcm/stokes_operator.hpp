@@ -1,4 +1,4 @@
-// Spectral Stokes solve on the sheared periodic grid (Yeo & Maxey 2010 section 2; DESIGN.md section 6).
+// Spectral Stokes solve on the sheared periodic grid (Yeo & Maxey 2010 section 2; docs/fcm.md).
 //   eta k^2 u(k) = (I - k k / k^2) f(k),  k = (k1, k2 - gamma_t k1, k3) the physical wavevector.
 // The k = 0 mode is set to zero: the net force on the fluid is balanced by a uniform pressure gradient and the
 // disturbance has zero mean (the imposed shear carries the mean flow). Nyquist planes are zeroed: on the sheared

@@ -1,4 +1,4 @@
-// DIR/checkpoint.h5: everything needed to continue a run exactly (DESIGN.md section 8).
+// DIR/checkpoint.h5: everything needed to continue a run exactly (docs/output.md).
 // Written atomically (temporary file + rename), so a kill at any moment leaves the previous checkpoint intact.
 // Holds the dynamical state, the case fingerprint (the resolved physics of the case: a checkpoint of another case
 // is refused), the output bookkeeping (series rows, snapshots, next output strains) and the RNG state.

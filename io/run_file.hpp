@@ -1,4 +1,4 @@
-// DIR/run.h5: the record of a run (DESIGN.md section 8).
+// DIR/run.h5: the record of a run (docs/output.md).
 //   /                      attributes: case (resolved YAML), version, git_commit, threads
 //   /series/{step,time,strain,shear_rate,dt,contacts,max_overlap,eta_r,N1,N2,Pi}      one row per record
 //   /series/stress/{total,hydrodynamic,lubrication,...}   (rows, 6): xx yy zz xy xz yz, units eta_0 gammadot_ref

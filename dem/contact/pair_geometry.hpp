@@ -1,4 +1,4 @@
-// What every pair law sees and returns (the contract of the shared contact module, DESIGN.md section 5).
+// What every pair law sees and returns (the contract of the shared contact module, docs/contact.md).
 //
 // Conventions, used by every law:
 //  * d = r_j - r_i (Lees-Edwards minimum image), n = d / |d| points from i to j.
@@ -6,7 +6,7 @@
 //  * Forces are returned as the force ON j; the driver applies -F to i (Newton's third law is structural).
 //  * Torques are returned for both particles (they differ for unequal radii).
 //  * The stresslet of a pair is S = -sym(d F_j^T) per contribution (virial); divided by the volume it gives Sigma,
-//    so a repulsive force yields a positive particle pressure Pi = -tr(Sigma)/3 (DESIGN.md section 3).
+//    so a repulsive force yields a positive particle pressure Pi = -tr(Sigma)/3 (docs/units.md, Conventions).
 // Units: lengths in a_1, forces in eta_0 gammadot a_1^2, velocities in gammadot a_1 (docs/units.md).
 #pragma once
 #include <array>

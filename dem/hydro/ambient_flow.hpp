@@ -1,5 +1,5 @@
 // The imposed (ambient) flow the particles are suspended in: simple shear and the wavy shear of paper 000 eq. 17.
-//   U_inf = (gammadot y + U sin(k y), 0, 0),  k = 2 pi n / L_y   (U = 0: simple shear, DESIGN.md section 3)
+//   U_inf = (gammadot y + U sin(k y), 0, 0),  k = 2 pi n / L_y   (U = 0: simple shear, docs/units.md, Conventions)
 //   Omega_inf = (1/2) curl U_inf = (0, 0, -(gammadot + U k cos(k y))/2)
 //   E_inf,xy = E_inf,yx = (gammadot + U k cos(k y))/2, other components 0 (traceless)
 //   lap U_inf = (-U k^2 sin(k y), 0, 0),  lap E_inf,xy = -U k^3 cos(k y)/2   (the Faxen terms, paper 000 eq. A.1, 9a)

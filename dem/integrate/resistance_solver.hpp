@@ -1,4 +1,4 @@
-// Overdamped (zero-inertia) hydrodynamic solve of the pairwise lubrication-DEM engine (DESIGN.md section 4;
+// Overdamped (zero-inertia) hydrodynamic solve of the pairwise lubrication-DEM engine (docs/overdamped.md;
 // paper 000 eqs. 1-3 with the inertia dropped, Appendix A; Mari, Seto, Morris & Denn, J. Rheol. 58, 1693 (2014)).
 //
 // CONTRACT

@@ -1,4 +1,4 @@
-// Time-step control of the overdamped step, shared by the pairwise engine and the FCM coupling (DESIGN.md section 4;
+// Time-step control of the overdamped step, shared by the pairwise engine and the FCM coupling (docs/overdamped.md;
 // docs/overdamped.md). Units: time in 1/gammadot_ref, lengths in a_1.
 //
 // Adaptive mode bounds dt by

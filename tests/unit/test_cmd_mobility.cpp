@@ -1,5 +1,6 @@
 // The `suspend mobility` command end to end: JSON drag ratio against the exact periodic-Gaussian drag
-// 1 - 2.837297 (a/L) + 4 (a/L)^3 (reference/README.md), and exit code 2 with one line on bad input.
+// 1 - 2.837297 (a/L) + 4 (a/L)^3 (docs/references.md, "Force Coupling Method
+// facts"), and exit code 2 with one line on bad input.
 #include <gtest/gtest.h>
 
 #include <algorithm>

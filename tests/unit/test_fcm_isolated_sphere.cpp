@@ -1,6 +1,7 @@
 // One sphere in a periodic cube, against exact results:
 //  - drag 6 pi eta a U / F vs Hasimoto (1959): 1 - 2.8373 (a/L) + 4.19 (a/L)^3 - 27.4 (a/L)^6 (rigid sphere),
-//    and vs the exact periodic-Gaussian value 1 - 2.837297 (a/L) + 4 (a/L)^3 (reference/README.md);
+//    and vs the exact periodic-Gaussian value 1 - 2.837297 (a/L) + 4 (a/L)^3 (docs/references.md, "Force Coupling
+//    Method facts");
 //  - torque-rotation Omega = T / (8 pi eta a^3) and strain-stresslet S = (20/3) pi eta a^3 E (Stokes; Lomholt &
 //    Maxey 2003). Large-box correction: the zero-mean periodic flow lacks the k -> 0 vorticity T / (3 eta V), so
 //    Omega = T / (8 pi eta a^3) (1 - phi), phi = (4/3) pi a^3 / L^3 (exact; the solver reproduces -phi to 3e-8 at

@@ -1,4 +1,4 @@
-// Lees-Edwards periodicity of the FCM solve (DESIGN.md section 6): the lattice with offset D is the lattice with
+// Lees-Edwards periodicity of the FCM solve (docs/fcm.md): the lattice with offset D is the lattice with
 // offset D + m L_x, an LE image of a particle is the particle, and the flow near a pair across the sheared face is
 // the flow near the same pair in the middle of an unsheared box (up to O((r/L)^2 a/L) lattice-shape terms).
 #include <gtest/gtest.h>

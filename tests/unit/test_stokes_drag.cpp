@@ -25,7 +25,8 @@ TEST(StokesDrag, StokesLawForTranslationAndRotation) {
   EXPECT_EQ(r.stresslet.norm(), 0.0);
 }
 
-// Simple shear (DESIGN.md section 3): U_inf = (gammadot y, 0, 0), Omega_inf = (0, 0, -gammadot/2), E_xy = gammadot/2.
+// Simple shear (docs/units.md, Conventions): U_inf = (gammadot y, 0, 0), Omega_inf = (0, 0, -gammadot/2),
+// E_xy = gammadot/2.
 // A sphere moving and spinning with the fluid feels nothing; its stresslet is (20/3) pi a^3 E (Einstein).
 TEST(StokesDrag, SphereAdvectedBySimpleShearIsForceFree) {
   const double gammadot = 2.5, a = 1.3;
