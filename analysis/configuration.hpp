@@ -24,6 +24,7 @@ struct Configuration {
   double time = 0.0, strain = 0.0;
   Box box;  // lengths and the Lees-Edwards offset of this instant
   std::vector<Vec3> position;
+  std::vector<Vec3> velocity;  // lab-frame translational velocity; empty when unknown (built by hand without it)
   std::vector<double> radius;
   std::vector<int> species;
   std::vector<Contact> contacts;

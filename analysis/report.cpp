@@ -5,6 +5,7 @@
 #include "analysis/contact_network.hpp"
 #include "analysis/contact_stress.hpp"
 #include "analysis/distributions.hpp"
+#include "analysis/gradient_profile.hpp"
 
 namespace suspend::analysis {
 
@@ -51,6 +52,10 @@ json report(const Configuration& c, const ReportOptions& options) {
   out["clusters"] = {{"count", cl.clusters.size()}, {"largest", cl.largest},      {"mean", cl.mean_size},
                      {"isolated", cl.isolated},      {"percolates", axes(cl.percolates)}, {"percolating", spanning},
                      {"sizes", sizes}};
+  const GradientProfile gp = gradient_profile(c, options.profile_bins);
+  out["gradient_profile"] = {{"bins", options.profile_bins}, {"width", gp.width},           {"y", gp.y},
+                             {"phi", gp.phi},                {"count", gp.count},           {"mean_y", gp.mean_y},
+                             {"velocity", gp.velocity},      {"shear_rate", gp.shear_rate}, {"local_rate", gp.local_rate}};
   if (!options.distributions) return out;
   const ForceDistributions f = force_distributions(c);
   out["force_distribution"] = c.contact_details ? json{{"normal", histogram(f.normal)}, {"tangential", histogram(f.tangential)}}

@@ -1,6 +1,7 @@
-// `suspend analyze RUN_DIR [--snapshot K|last|all] [--json] [--no-distributions]`: the microstructure of a run's
-// snapshots (analysis/report.hpp; docs/output.md, "Microstructure"): a line per snapshot, or with --json an array
-// of one object per snapshot.
+// `suspend analyze RUN_DIR [--snapshot K|last|all] [--json] [--no-distributions] [--bins N] [--profile]`: the
+// microstructure of a run's snapshots (analysis/report.hpp; docs/output.md, "Microstructure"): a line per snapshot,
+// or with --json an array of one object per snapshot; --profile adds the mean gradient profile.
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -48,8 +49,56 @@ std::string axes(const json& p) {
 
 struct AnalyzeOptions {
   std::string run, snapshot = "last";
-  bool json_output = false, no_distributions = false;
+  bool json_output = false, no_distributions = false, profile = false;
+  int bins = 8;
 };
+
+// The gradient profiles of the chosen snapshots averaged: phi and the particle count per slab, and u_x in units of
+// each snapshot's own shear rate (so that snapshots of a stress-controlled run, whose rate fluctuates, average to
+// y - y_0 for a homogeneous shear), with the slope between neighbouring slabs over the mean slope (1 everywhere
+// without banding).
+void print_mean_profile(const json& all) {
+  const json& first = all.front()["gradient_profile"];
+  const std::size_t bins = first["y"].size();
+  std::vector<double> phi(bins, 0.0), count(bins, 0.0), y(bins, 0.0), u(bins, 0.0);
+  std::vector<int> y_n(bins, 0), u_n(bins, 0);
+  for (const json& r : all) {
+    const json& g = r["gradient_profile"];
+    const double rate = g["shear_rate"].is_number() ? g["shear_rate"].get<double>() : 0.0;
+    for (std::size_t k = 0; k < bins; ++k) {
+      phi[k] += g["phi"][k].get<double>() / all.size();
+      count[k] += g["count"][k].get<double>() / all.size();
+      if (!g["mean_y"][k].is_number()) continue;
+      y[k] += g["mean_y"][k].get<double>();
+      ++y_n[k];
+      if (rate != 0.0 && g["velocity"][k].is_number()) {
+        u[k] += g["velocity"][k].get<double>() / rate;
+        ++u_n[k];
+      }
+    }
+  }
+  std::vector<double> slope(bins, std::nan(""));
+  double first_y = 0.0, last_y = 0.0, first_u = 0.0, last_u = 0.0;
+  bool any = false;
+  for (std::size_t k = 0; k < bins; ++k) {
+    y[k] = y_n[k] ? y[k] / y_n[k] : std::nan("");
+    u[k] = u_n[k] ? u[k] / u_n[k] : std::nan("");
+    if (std::isfinite(u[k])) {
+      if (!any) first_y = y[k], first_u = u[k];
+      last_y = y[k], last_u = u[k];
+      any = true;
+    }
+  }
+  const double mean_slope = last_y > first_y ? (last_u - first_u) / (last_y - first_y) : std::nan("");
+  for (std::size_t k = 0; k + 1 < bins; ++k)
+    if (std::isfinite(u[k]) && std::isfinite(u[k + 1]) && y[k + 1] > y[k])
+      slope[k] = (u[k + 1] - u[k]) / (y[k + 1] - y[k]) / mean_slope;
+  std::printf("\ngradient profile, mean of %zu snapshot(s), %zu slabs of width %.4g across y:\n", all.size(), bins,
+              first["width"].get<double>());
+  std::printf("%9s %8s %10s %12s %22s\n", "y", "phi", "particles", "u_x/rate", "slope to next / mean");
+  for (std::size_t k = 0; k < bins; ++k)
+    std::printf("%9.4g %8.4f %10.2f %12.4g %22.4g\n", first["y"][k].get<double>(), phi[k], count[k], u[k], slope[k]);
+}
 
 // The report of the chosen snapshots, printed.
 void analyze(const AnalyzeOptions& opt, const std::string& file) {
@@ -59,6 +108,7 @@ void analyze(const AnalyzeOptions& opt, const std::string& file) {
   const std::vector<std::size_t> which = chosen_snapshots(opt.snapshot, io::snapshot_count(h5.id()), file);
   analysis::ReportOptions options;
   options.distributions = !opt.no_distributions;
+  options.profile_bins = opt.bins;
   // Every snapshot read before anything is printed: a damaged one stops the command with nothing half-written.
   json all = json::array();
   for (std::size_t k : which) {
@@ -85,6 +135,7 @@ void analyze(const AnalyzeOptions& opt, const std::string& file) {
                 number(r["contact_stress"]["xy"], "%.5g").c_str());
   }
   if (opt.json_output) std::printf("%s\n", all.dump(1).c_str());
+  if (!opt.json_output && opt.profile) print_mean_profile(all);
 }
 
 }  // namespace
@@ -97,6 +148,10 @@ void add_analyze_command(CLI::App& app) {
   cmd->add_flag("--json", opt->json_output, "print an array of one object per snapshot (docs/output.md)");
   cmd->add_flag("--no-distributions", opt->no_distributions,
                 "leave out the force, gap and pair distributions (scalars, tensors and clusters only)");
+  cmd->add_option("--bins", opt->bins, "slabs across y of the gradient profile (phi and u_x against y; default 8)")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_flag("--profile", opt->profile,
+                "also print the gradient profile averaged over the chosen snapshots (shear banding, migration)");
   cmd->callback([opt] {
     const std::string file = run_file_argument(opt->run, "analyze");
     // A damaged or foreign file is bad input naming the file (exit 2), whatever layer finds it.

@@ -51,6 +51,16 @@ analysis::Configuration read_configuration(hid_t run_file, std::size_t index) {
       throw InputError(g + ": particle " + std::to_string(i) + " has a non-finite position or a bad radius");
   }
   c.species.assign(species.begin(), species.end());
+  if (h5::exists(run_file, g + "/velocity")) {
+    const std::vector<double> velocity = h5::read_doubles(run_file, g + "/velocity");
+    if (velocity.size() != 3 * n) throw InputError(g + "/velocity: not one vector per particle");
+    c.velocity.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      c.velocity[i] = Vec3(velocity[3 * i], velocity[3 * i + 1], velocity[3 * i + 2]);
+      if (!c.velocity[i].allFinite())
+        throw InputError(g + "/velocity: particle " + std::to_string(i) + " is not finite");
+    }
+  }
 
   const std::vector<std::int64_t> pairs = h5::read_ints(run_file, g + "/contact_pairs");
   const std::vector<double> force = h5::read_doubles(run_file, g + "/contact_force");

@@ -114,3 +114,23 @@ TEST(Analyze, PrintsALinePerSnapshotAndRefusesBadChoices) {
   expect_input_error({"analyze", dir, "--snapshot", "1x"}, "--snapshot '1x'", "");
   expect_input_error({"analyze", dir + "/nowhere"}, "not found", "");
 }
+
+TEST(Analyze, GradientProfileOfTheRun) {
+  const std::string dir = analysed_run();
+  const Result r = run({"analyze", dir, "--snapshot", "last", "--json", "--no-distributions", "--bins", "6"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json g = json::parse(r.out).back()["gradient_profile"];
+  ASSERT_EQ(g["phi"].size(), 6u);
+  double phi = 0.0, count = 0.0;
+  for (int k = 0; k < 6; ++k) phi += g["phi"][k].get<double>() / 6.0, count += g["count"][k].get<double>();
+  const json summary = json::parse(read_text(dir + "/summary.json"));
+  EXPECT_NEAR(phi, summary["phi"].get<double>(), 1e-12);  // the slabs' exact sphere volumes add up to the box's
+  EXPECT_EQ(count, json::parse(r.out).back()["particles"].get<double>());
+  EXPECT_TRUE(g["shear_rate"].is_number());  // the snapshots carry velocities
+  const Result text = run({"analyze", dir, "--snapshot", "all", "--profile", "--no-distributions"});
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("gradient profile, mean of 4 snapshot(s), 8 slabs"), std::string::npos) << text.out;
+  const Result bad = run({"analyze", dir, "--bins", "0"});
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--bins"), std::string::npos) << bad.err;
+}
