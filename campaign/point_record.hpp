@@ -18,6 +18,10 @@ struct PointRecord {
   std::string message;  // why it failed or jammed, from the run's last error line
   double wall_seconds = 0.0;  // summed over every run of the point
   int runs = 0;               // times it was started (1 + restarts)
+  // The particles.initial the point started from when it is not its own packing (a searched point started from a
+  // flowing state, campaign/search.hpp); empty otherwise. Kept so that a replayed search lists the start of a
+  // finished point after its source run is gone (a folder restored from a table, tools/restore_campaign.py).
+  std::string initial;
 };
 
 PointRecord read_record(const std::filesystem::path& point_dir);

@@ -39,6 +39,9 @@ std::vector<GroupSearch> plan_search(const Campaign& c, const fs::path& out_dir)
       SearchedValue sv;
       sv.value = v;
       for (int seed = 1; seed <= s.seeds; ++seed) {
+        // A finished point started where its record says, whether or not that run is still on disk.
+        const PointRecord before = read_record(point_dir(out_dir, c.make_point(at_value(group, s, v, seed))));
+        const bool finished = before.status == "done" || before.status == "jammed" || before.status == "failed";
         const Point* flowing = nullptr;
         double below = -1.0;
         for (const SearchedValue& earlier : g.values)
@@ -57,7 +60,10 @@ std::vector<GroupSearch> plan_search(const Campaign& c, const fs::path& out_dir)
                         ", compress: true}"},
                    {"particles.count", "null"},
                    {"box", "null"}};
-        const Point p = c.make_point(at_value(group, s, v, seed), start);
+        Point p = c.make_point(at_value(group, s, v, seed), start);
+        if (!flowing && finished && !before.initial.empty())  // its source run is gone: listed, not validated
+          p.parameters.insert(p.parameters.end(),
+                              {{"particles.initial", before.initial}, {"particles.count", "null"}, {"box", "null"}});
         const std::string status = read_record(point_dir(out_dir, p)).status;
         if (status == "done") ++sv.flowed;
         else if (status == "jammed") ++sv.jammed;

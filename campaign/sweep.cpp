@@ -190,6 +190,9 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
     r.status = "running";
     r.message.clear();
     ++r.runs;
+    r.initial.clear();
+    for (const Assignment& a : p->parameters)
+      if (a.key == "particles.initial") r.initial = a.value;
     write_record(pd, r);
     const std::string log = (pd / "log.txt").string();
     const pid_t pid = fork();

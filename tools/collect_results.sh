@@ -20,9 +20,14 @@ for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise
     done
   fi
   [ -f "$out/campaign.json" ] || continue
+  if [ "$method" = fcm_seed_scatter ]; then  # a seed study, not a phi_m campaign
+    /usr/bin/python3 "$root/tools/seed_scatter.py" "$out" > "$out/seed_scatter.txt"
+    cat "$out/seed_scatter.txt"
+    continue
+  fi
   (cd "$root" && "$suspend" phim "results/phim/$method" > "results/phim/$method/phim.txt")
   cat "$out/phim.txt"
-  [[ $method == pairwise_boundary* || $method == fcm_seed_scatter ]] && continue
+  [[ $method == pairwise_boundary* ]] && continue
   # paper 004 fits mu_s <= 0.1 on phi >= 0.45 only, nearer phi_m (section III C)
   mkdir -p "$out/from_phi0.45"
   (cd "$root" && "$suspend" phim "results/phim/$method" --min-phi 0.45 -o "results/phim/$method/from_phi0.45" \

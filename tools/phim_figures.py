@@ -30,6 +30,7 @@ POOR_FIT_CHI2 = 10.0
 METHOD_NAME = {"pairwise": "pairwise", "fcm": "FCM"}
 SEARCH_PREFIX = "pairwise_boundary"
 SEARCH_OF = "pairwise"  # the method whose groups a search replaces
+SEARCH_DRAWN_WIDTH = 0.01  # drawn (replacing the one-seed group) once converged: the searches' tolerance
 METHOD_STYLE = {"pairwise": dict(marker="o", linestyle="-", fillstyle="full"),
                 "fcm": dict(marker="s", linestyle="--", fillstyle="none")}
 METHOD_SHIFT = {"pairwise": 1.0, "fcm": 1.06}  # Fig. 15: FCM drawn 6% to the right of its sigma* for clarity
@@ -161,7 +162,9 @@ def figure_15(methods, out, searched=()):
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
     fig, ax = plt.subplots(figsize=(8.6, 4.6))
-    searched = [f for f in searched if f.get("bracket")]
+    # a search still running has a wide bracket: not yet a result
+    searched = [f for f in searched
+                if f.get("bracket") and f["bracket"][1] - f["bracket"][0] <= SEARCH_DRAWN_WIDTH + 1e-9]
     replaced = {(f["mu_s"], sigma_of(f)) for f in searched}
     drawn = {method: [(f, d) for f in fits["fits"] if (d := drawn_phi_m(f))
                       and not (method == SEARCH_OF and (f["mu_s"], sigma_of(f)) in replaced)]

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Restores the finished points of a campaign folder from a campaign table (campaign.json), so that a sweep whose
 raw runs were lost (a new machine, a cleaned scratch disk) continues with the points it had not finished instead of
-running all of them again. Each done or jammed point gets its point.json (status, message, wall time) and its
-summary.json back, which is all `suspend sweep` reads of a finished point; the table the sweep then writes holds the
+running all of them again. Each done or jammed point gets its point.json (status, message, wall time, and the
+particles.initial it started from, if any) and its summary.json back, which is all `suspend sweep` reads of a finished point; the table the sweep then writes holds the
 same rows. Snapshots and series of the restored points are not recovered (the table never held them).
 
 usage: tools/restore_campaign.py TABLE.json OUT_DIR     (then: suspend sweep CAMPAIGN.yaml --out OUT_DIR)
@@ -45,6 +45,9 @@ def main():
         write_atomically(os.path.join(folder, "summary.json"), json.dumps(p["summary"], indent=2) + "\n")
         record = {"status": p["status"], "exit_code": 0 if p["status"] == "done" else 4,  # core/error.hpp exit_jammed
                   "message": p.get("message", ""), "wall_seconds": p["wall_seconds"], "runs": 1}
+        initial = (p.get("parameters") or {}).get("particles.initial")
+        if initial:  # a searched point started from a flowing state (campaign/point_record.hpp)
+            record["initial"] = initial
         write_atomically(os.path.join(folder, "point.json"), json.dumps(record, indent=2) + "\n")
         restored += 1
     print(f"{restored} finished point(s) restored into {out}, {kept} already there; "

@@ -5,6 +5,8 @@
 // --retry-failed; --status reads a finished and a half-finished sweep.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include <chrono>
 #include <fstream>
 #include <map>
@@ -214,6 +216,16 @@ TEST(Sweep, TheSearchBisectsToTheBoundaryWithSeeds) {
     }
   }
   EXPECT_GE(rescaled, 2) << "the seeds that flowed at 0.3 start 0.32 from there";
+  // Restored from its table into a folder without the runs (tools/restore_campaign.py, a new machine), the search
+  // runs nothing and lists the same points with the same starts (point.json keeps what a point started from).
+  const std::string restored = fresh_dir("search_from_flowing_restored");
+  const std::string restore = "/usr/bin/python3 " SUSPEND_SOURCE_DIR "/tools/restore_campaign.py " + fd +
+                              "/campaign.json " + restored + " > /dev/null";
+  ASSERT_EQ(std::system(restore.c_str()), 0) << restore;
+  const Result rr = run({"sweep", dense, "--out", restored});
+  ASSERT_EQ(rr.code, 0) << rr.err;
+  EXPECT_EQ(rr.out.find("start "), std::string::npos) << rr.out;
+  EXPECT_EQ(table(restored)["points"], td["points"]);
 
   const std::string below = write_case("below.yaml", body + "search: {key: particles.phi, lo: 0.4, hi: 0.5, "
                                                             "tolerance: 0.02}\n");
