@@ -95,13 +95,13 @@ void append_product(const YAML::Node& vary, const std::string& where, std::vecto
 Search read_search(const YAML::Node& n) {
   if (!n.IsMap())
     throw InputError("search: must be a mapping {key: particles.phi, lo: 0.40, hi: 0.62, tolerance: 0.01, seeds: 3}");
-  const std::vector<std::string> allowed = {"key", "lo", "hi", "tolerance", "seeds", "from_flowing"};
+  const std::vector<std::string> allowed = {"key", "lo", "hi", "tolerance", "seeds", "from_flowing", "flows"};
   for (const auto& kv : n) {
     const std::string k = kv.first.Scalar();
     if (std::find(allowed.begin(), allowed.end(), k) == allowed.end()) {
       const std::string near = io::closest_word(k, allowed);
       throw InputError("search." + k + ": unknown key" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
-                       "; allowed: key, lo, hi, tolerance, seeds, from_flowing");
+                       "; allowed: key, lo, hi, tolerance, seeds, from_flowing, flows");
     }
   }
   auto number = [&](const char* k) {
@@ -130,6 +130,15 @@ Search read_search(const YAML::Node& n) {
     s.from_flowing = number("from_flowing");
     if (!(s.from_flowing >= 0.0)) throw InputError("search.from_flowing: must be >= 0 (0: never)");
   }
+  if (n["flows"]) {
+    const std::string side = n["flows"].IsScalar() ? n["flows"].Scalar() : yaml_text(n["flows"]);
+    if (side != "below" && side != "above")
+      throw InputError("search.flows: '" + side + "' is not allowed; allowed: below (the default: values below the "
+                       "boundary flow, e.g. particles.phi) or above (e.g. flow.shear_stress against a yield stress)");
+    s.flows_above = side == "above";
+  }
+  if (s.flows_above && s.from_flowing > 0.0)
+    throw InputError("search.from_flowing: only with flows: below (it rescales a flowing state to a denser phi)");
   return s;
 }
 

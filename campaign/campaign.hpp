@@ -21,7 +21,8 @@ struct Point {
 };
 
 // A boundary search (docs/campaigns.md, "Searching for phi_m"): in each group of the vary product, `key` is bisected
-// between the highest value that flows and the lowest that jams, `seeds` packings (run.seed 1..seeds) per value.
+// between the flowing and the jammed side (the highest value that flows and the lowest that jams, or the other way
+// round with `flows: above`), `seeds` packings (run.seed 1..seeds) per value.
 struct Search {
   std::string key;           // e.g. particles.phi
   double lo = 0.0, hi = 0.0;  // the range searched
@@ -30,6 +31,9 @@ struct Search {
   // Values at most this far above one where the same seed flowed start from that run's last state, rescaled
   // (particles.initial.compress); 0: every point starts from a generated packing.
   double from_flowing = 0.0;
+  // Which side of the boundary flows: below (phi: dilute flows, dense jams) or above (flow.shear_stress at fixed
+  // phi: a suspension with a yield stress flows above it and arrests below, so the bracket is sigma_Y).
+  bool flows_above = false;
   // Values tried lie on a grid of tolerance / 2 from lo, so that they have short, stable names.
   double grid() const { return tolerance / 2.0; }
 };

@@ -1,5 +1,6 @@
 #include "campaign/search.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -87,25 +88,29 @@ std::vector<GroupSearch> plan_search(const Campaign& c, const fs::path& out_dir)
       plan.push_back(std::move(g));
       continue;
     }
-    if (!lo.flows()) g.state = "below lo: " + c.search->key + " = " + format_value(s.lo) + " already jams";
-    else if (hi.flows()) g.state = "above hi: " + c.search->key + " = " + format_value(s.hi) + " still flows";
+    const std::string& key = c.search->key;
+    if (!s.flows_above && !lo.flows()) g.state = "below lo: " + key + " = " + format_value(s.lo) + " already jams";
+    else if (!s.flows_above && hi.flows()) g.state = "above hi: " + key + " = " + format_value(s.hi) + " still flows";
+    else if (s.flows_above && lo.flows()) g.state = "below lo: " + key + " = " + format_value(s.lo) + " still flows";
+    else if (s.flows_above && !hi.flows()) g.state = "above hi: " + key + " = " + format_value(s.hi) + " already jams";
     if (!g.state.empty()) {
       plan.push_back(std::move(g));
       continue;
     }
     g.bracketed = true;
-    g.flow_hi = s.lo;
-    g.jam_lo = s.hi;
+    g.flow_end = s.flows_above ? s.hi : s.lo;
+    g.jam_end = s.flows_above ? s.lo : s.hi;
     const double grid = s.grid();
     for (;;) {
-      if (g.jam_lo - g.flow_hi <= s.tolerance * (1.0 + 1e-9)) {
+      const double bottom = std::min(g.flow_end, g.jam_end), top = std::max(g.flow_end, g.jam_end);
+      if (top - bottom <= s.tolerance * (1.0 + 1e-9)) {
         g.state = "converged";
         break;
       }
       // The midpoint on the grid, strictly inside the bracket.
-      const double steps = std::round((0.5 * (g.flow_hi + g.jam_lo) - s.lo) / grid);
+      const double steps = std::round((0.5 * (bottom + top) - s.lo) / grid);
       const double mid = std::round((s.lo + steps * grid) * 1e9) / 1e9;
-      if (!(mid > g.flow_hi + 1e-12 && mid < g.jam_lo - 1e-12)) {
+      if (!(mid > bottom + 1e-12 && mid < top - 1e-12)) {
         g.state = "converged";
         break;
       }
@@ -116,7 +121,7 @@ std::vector<GroupSearch> plan_search(const Campaign& c, const fs::path& out_dir)
         g.next.push_back(mid);
         break;
       }
-      (m.flows() ? g.flow_hi : g.jam_lo) = mid;
+      (m.flows() ? g.flow_end : g.jam_end) = mid;
     }
     plan.push_back(std::move(g));
   }
@@ -137,7 +142,9 @@ std::string describe_search(const Campaign& c, const std::vector<GroupSearch>& p
     std::string line = g.name + ": ";
     line += g.state;
     if (g.bracketed)
-      line += ", bracket [" + format_value(g.flow_hi) + ", " + format_value(g.jam_lo) + "]";
+      line += ", bracket [" + format_value(std::min(g.flow_end, g.jam_end)) + ", " +
+              format_value(std::max(g.flow_end, g.jam_end)) + "]" +
+              (c.search->flows_above ? " (flows above)" : "");
     if (!g.next.empty()) {
       line += ", next";
       for (double v : g.next) {

@@ -1,5 +1,5 @@
 // The boundary search of a campaign (docs/campaigns.md, "Searching for phi_m"): per group, bisection of the searched
-// key between the highest value that flows and the lowest that jams. The state is replayed from the points' records
+// key between the value nearest the boundary that flows and the one that jams. The state is replayed from the points' records
 // each time, so a resumed or repeated sweep decides exactly as the first one did.
 #pragma once
 #include <filesystem>
@@ -25,7 +25,9 @@ struct GroupSearch {
   std::vector<SearchedValue> values;   // in the order the search tried them
   std::vector<double> next;            // values whose seeds are still to run (empty once the search stopped)
   std::string state;                   // "searching", "converged", "below lo", "above hi", "stopped: ..."
-  double flow_hi = 0.0, jam_lo = 0.0;  // the bracket so far (meaningful once both ends were decided)
+  // The bracket so far (meaningful once both ends were decided): the value nearest the boundary that flowed and the
+  // one that jammed (flowing < jammed, or the other way round with Search::flows_above).
+  double flow_end = 0.0, jam_end = 0.0;
   bool bracketed = false;
 };
 

@@ -227,6 +227,32 @@ TEST(Sweep, TheSearchBisectsToTheBoundaryWithSeeds) {
   EXPECT_EQ(rr.out.find("start "), std::string::npos) << rr.out;
   EXPECT_EQ(table(restored)["points"], td["points"]);
 
+  // flows: above, the yield-stress direction (flow.shear_stress at fixed phi): a value flows above the boundary and
+  // jams below it. Searched here on the classifier's own threshold at phi 0.3, where eta_r is about 3: a point flows
+  // when run.jammed.viscosity lies above its viscosity.
+  std::string unset = body;
+  unset.erase(unset.find("run.jammed.viscosity: 3, "), std::string("run.jammed.viscosity: 3, ").size());
+  const std::string above = write_case("above.yaml", unset + "vary: {particles.phi: [0.3]}\nsearch: {key: "
+                                                            "run.jammed.viscosity, lo: 1, hi: 9, tolerance: 1, "
+                                                            "flows: above}\n");
+  const std::string ad = fresh_dir("search_above");
+  const Result ra = run({"sweep", above, "--out", ad, "--jobs", "2"});
+  ASSERT_EQ(ra.code, 0) << ra.err;
+  EXPECT_NE(ra.out.find("converged, bracket ["), std::string::npos) << ra.out;
+  EXPECT_NE(ra.out.find("(flows above)"), std::string::npos) << ra.out;
+  double lowest_flowing = 1e9, highest_jammed = 0.0, eta_r = 0.0;
+  const json ta = table(ad);
+  for (const json& p : ta["points"]) {
+    const double v = p["parameters"]["run.jammed.viscosity"].get<double>();
+    if (p["status"] == "done" && v < lowest_flowing) lowest_flowing = v, eta_r = p["summary"]["eta_r"]["mean"];
+    if (p["status"] != "done") highest_jammed = std::max(highest_jammed, v);
+  }
+  EXPECT_GE(highest_jammed, 1.0);  // both sides were seen
+  EXPECT_LE(lowest_flowing - highest_jammed, 1.0 + 1e-9);
+  // the bracket holds the viscosity that the flowing point measured
+  EXPECT_GT(eta_r, highest_jammed);
+  EXPECT_LT(eta_r, lowest_flowing);
+
   const std::string below = write_case("below.yaml", body + "search: {key: particles.phi, lo: 0.4, hi: 0.5, "
                                                             "tolerance: 0.02}\n");
   const Result b = run({"sweep", below, "--out", fresh_dir("search_below")});
@@ -236,7 +262,10 @@ TEST(Sweep, TheSearchBisectsToTheBoundaryWithSeeds) {
       {"lo: 0.5, hi: 0.1, tolerance: 0.05", "search: lo = 0.5 must be below hi = 0.1"},
       {"lo: 0.1, hi: 0.5, tolerance: 0.05, seeds: 0", "search.seeds: must be a whole number from 1 to 100, not 0"},
       {"lo: 0.1, hi: 0.5, tolerance: -1", "search.tolerance: must be > 0"},
-      {"lo: 0.1, hi: 0.5, toleranse: 0.1", "search.toleranse: unknown key (did you mean 'tolerance'?)"}};
+      {"lo: 0.1, hi: 0.5, toleranse: 0.1", "search.toleranse: unknown key (did you mean 'tolerance'?)"},
+      {"lo: 0.1, hi: 0.5, tolerance: 0.05, flows: sideways", "search.flows: 'sideways' is not allowed"},
+      {"lo: 0.1, hi: 0.5, tolerance: 0.05, flows: above, from_flowing: 0.03",
+       "search.from_flowing: only with flows: below"}};
   for (const auto& [fields, message] : bad)
     expect_input_error(
         {"sweep", write_case("bad_search.yaml", body + "search: {key: particles.phi, " + fields + "}\n"), "--list"},
