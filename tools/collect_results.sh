@@ -10,7 +10,9 @@ runs=${1:-$root/runs}
 suspend=${2:-$root/build/bin/suspend}
 # name in runs/ | folder under results/phim/
 for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise_boundary" \
-    "pairwise_boundary_low_friction|pairwise_boundary_low_friction" "fcm_seed_scatter|fcm_seed_scatter"; do
+    "pairwise_boundary_low_friction|pairwise_boundary_low_friction" \
+    "pairwise_boundary_low_friction_low_stress|pairwise_boundary_low_friction_low_stress" \
+    "fcm_seed_scatter|fcm_seed_scatter"; do
   IFS='|' read -r name method <<< "$entry"
   out="$root/results/phim/$method"
   if [ -f "$runs/$name/campaign.json" ]; then
