@@ -211,6 +211,10 @@ def concurrency(ctx, tally, rounds):
     alone = ctx.fresh("alone")
     run([s] + args + ["--out", alone])
     reference = summary_without_clock(alone)
+    # The same run continued to strain 0.4 from its final checkpoint: what a restart that starts after the first
+    # run ended must give.
+    run([s] + args + ["--restart", os.path.join(alone, "checkpoint.h5"), "--set", "run.strain=0.4"])
+    continued = summary_without_clock(alone)
     env_base = dict(os.environ, OMP_WAIT_POLICY="passive")
     for k in range(rounds):
         d = ctx.fresh("shared")
@@ -230,8 +234,12 @@ def concurrency(ctx, tally, rounds):
         _, err1 = first.communicate()
         code1 = first.returncode
         what = f"round {k} (HDF5 locking {env['HDF5_USE_FILE_LOCKING']}): exits {code1} and {code2}"
-        if restart and not running:  # the first had ended: the restart continues it, as after any finished run
-            ok = code1 == 0 and code2 == 0
+        if restart and (not running or (code1, code2) == (0, 0)):
+            # The first had ended (before the poll, or between the poll and the restart's lock): the restart
+            # continues its final checkpoint, as after any finished run, and must give the continued reference.
+            ok = code1 == 0 and code2 == 0 and summary_without_clock(d) == continued
+        elif restart:  # the restart was refused while the first held the folder
+            ok = (code1, code2) == (0, 2) and summary_without_clock(d) == reference
         else:  # either may win the folder (the second can start first); the folder holds the winner's run alone
             ok = sorted((code1, code2)) == [0, 2] and summary_without_clock(d) == reference
         ok = ok and contract(code1, err1) is None and contract(code2, err2) is None
