@@ -2,7 +2,9 @@
 # Resumes the project's long campaigns on this machine, in the background, one after the other on both cores:
 # issue 34's boundary searches (runs/pairwise_boundary, runs/pairwise_boundary_low_friction and
 # runs/pairwise_boundary_low_friction_low_stress, from cases/phim/pairwise_boundary*.yaml) and FCM seed scatter (runs/fcm_seed_scatter); tools/collect_results.sh copies
-# their tables and fits to results/phim/NAME as they fill;
+# their tables and fits to results/phim/NAME as they fill; issue 40's normal-stress ensemble
+# (runs/normal_stress_functions, cases/validation/normal_stress_functions.yaml: singular against exact two-sphere
+# functions on the frictionless case);
 # issue 35's accuracy ensembles of the default step (runs/step_frictionless, runs/step_ensemble: the packings of
 # each case run by the current engine, set against the same campaigns run by the engine before issue 35,
 # runs/step_*_before with a binary built at 2fbb67f, and runs/step_particles: the former step rule with the current
@@ -38,6 +40,7 @@ campaigns=(
   "fcm_seed_scatter|$root/cases/phim/fcm_seed_scatter.yaml|$root/results/phim/fcm_seed_scatter/campaign.json"
   "pairwise_boundary_low_friction|$root/cases/phim/pairwise_boundary_low_friction.yaml|$root/results/phim/pairwise_boundary_low_friction/campaign.json"
   "pairwise_boundary_low_friction_low_stress|$root/cases/phim/pairwise_boundary_low_friction_low_stress.yaml|$root/results/phim/pairwise_boundary_low_friction_low_stress/campaign.json"
+  "normal_stress_functions|$root/cases/validation/normal_stress_functions.yaml|$root/results/normal_stress_functions/campaign.json"
   "step_frictionless|$root/cases/validation/step_control_ensemble_frictionless.yaml|$root/results/step_control/frictionless_after/campaign.json"
   "step_ensemble|$root/cases/validation/step_control_ensemble.yaml|$root/results/step_control/adhesive_after/campaign.json"
   "step_particles|$root/cases/validation/step_control_ensemble_particles.yaml|$root/results/step_control/adhesive_particles/campaign.json"
