@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Copies the campaign tables of the raw runs (ignored folder runs/) into results/phim/METHOD/ (the phi_m campaigns
-# and issue 34's boundary searches and FCM seed scatter), fits them with `suspend phim` (all points, and phi >= 0.45 only as paper 004 does
+# and issue 34's boundary searches and FCM seed scatter; issue 40's normal-stress ensemble to
+# results/normal_stress_functions/), fits them with `suspend phim` (all points, and phi >= 0.45 only as paper 004 does
 # for mu_s <= 0.1: METHOD/from_phi0.45/) and redraws the figures, so the committed results follow the campaigns as
 # they fill; a table already committed is fitted again with the current `suspend phim`.
 # usage: tools/collect_results.sh [RUNS_DIR=runs] [SUSPEND=build/bin/suspend]
@@ -36,3 +37,15 @@ for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise
     > "results/phim/$method/from_phi0.45/phim.txt")
 done
 /usr/bin/python3 "$root/tools/phim_figures.py" "$root/results/phim"
+# Issue 40's normal-stress ensemble: its table, and the means of singular against exact_relative per phi.
+if [ -f "$runs/normal_stress_functions/campaign.json" ]; then
+  out="$root/results/normal_stress_functions"
+  mkdir -p "$out"
+  for f in campaign.json campaign.csv; do
+    sed "s|$root/||g" "$runs/normal_stress_functions/$f" > "$out/$f.part" && mv "$out/$f.part" "$out/$f"
+  done
+  for phi in 0.45 0.5 0.55; do
+    /usr/bin/python3 "$root/tools/ensemble_means.py" "$out/campaign.json" hydrodynamics.lubrication.functions \
+      --where particles.phi=$phi
+  done > "$out/ensemble_means.txt" 2>&1 || true
+fi

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Ensemble means of a campaign's points grouped by one varied key (e.g. seeds of the same case run two ways):
-per group, the mean over its points of eta_r, Sigma^c_12/Sigma_12 and N2, the ensemble standard error
+per group, the mean over its points of eta_r, Sigma^c_12/Sigma_12, N1, N2 and Pi, the ensemble standard error
 (sample standard deviation / sqrt(n)), the mean of the points' own block-averaged errors, the difference
 of each group from the first with its combined error, and the mean difference over twins (points whose other
 parameters, e.g. the seed, are equal) with two errors: from the scatter of the differences, and from the runs' own
@@ -24,8 +24,8 @@ import math
 import os
 import sys
 
-QUANTITIES = (("eta_r", "eta_r"), ("Sigma_c12/Sigma_12", "Sigma^c_12/Sigma_12"), ("N2", "N2"),
-              ("contacts_per_particle", "contacts per particle"))
+QUANTITIES = (("eta_r", "eta_r"), ("Sigma_c12/Sigma_12", "Sigma^c_12/Sigma_12"), ("N1", "N1"), ("N2", "N2"),
+              ("Pi", "Pi"), ("contacts_per_particle", "contacts per particle"))
 
 
 def mean_and_error(values):
