@@ -24,6 +24,11 @@ std::vector<Assignment> at_value(const std::vector<Assignment>& group, const Sea
   a.push_back({"run.seed", std::to_string(seed)});
   return a;
 }
+
+// The overrides that start a point from another run's state (particles.initial text) instead of a packing.
+std::vector<Assignment> started_from(const std::string& initial) {
+  return {{"particles.initial", initial}, {"particles.count", "null"}, {"box", "null"}};
+}
 }  // namespace
 
 std::vector<GroupSearch> plan_search(const Campaign& c, const fs::path& out_dir) {
@@ -40,9 +45,6 @@ std::vector<GroupSearch> plan_search(const Campaign& c, const fs::path& out_dir)
       SearchedValue sv;
       sv.value = v;
       for (int seed = 1; seed <= s.seeds; ++seed) {
-        // A finished point started where its record says, whether or not that run is still on disk.
-        const PointRecord before = read_record(point_dir(out_dir, c.make_point(at_value(group, s, v, seed))));
-        const bool finished = before.status == "done" || before.status == "jammed" || before.status == "failed";
         const Point* flowing = nullptr;
         double below = -1.0;
         for (const SearchedValue& earlier : g.values)
@@ -56,16 +58,19 @@ std::vector<GroupSearch> plan_search(const Campaign& c, const fs::path& out_dir)
           }
         std::vector<Assignment> start;
         if (flowing)
-          start = {{"particles.initial",
-                    "{from: file, file: " + fs::absolute(point_dir(out_dir, *flowing) / "run.h5").lexically_normal().string() +
-                        ", compress: true}"},
-                   {"particles.count", "null"},
-                   {"box", "null"}};
+          start = started_from("{from: file, file: " +
+                               fs::absolute(point_dir(out_dir, *flowing) / "run.h5").lexically_normal().string() +
+                               ", compress: true}");
         Point p = c.make_point(at_value(group, s, v, seed), start);
-        if (!flowing && finished && !before.initial.empty())  // its source run is gone: listed, not validated
-          p.parameters.insert(p.parameters.end(),
-                              {{"particles.initial", before.initial}, {"particles.count", "null"}, {"box", "null"}});
-        const std::string status = read_record(point_dir(out_dir, p)).status;
+        // (the folder is named by the parameters alone, so the record is found whatever the start)
+        const PointRecord record = read_record(point_dir(out_dir, p));
+        const std::string& status = record.status;
+        // A finished point whose source run is gone (a folder restored from a table) started where its record
+        // says: listed so, not validated.
+        if (!flowing && !record.initial.empty() && (status == "done" || status == "jammed" || status == "failed")) {
+          const std::vector<Assignment> recorded = started_from(record.initial);
+          p.parameters.insert(p.parameters.end(), recorded.begin(), recorded.end());
+        }
         if (status == "done") ++sv.flowed;
         else if (status == "jammed") ++sv.jammed;
         else if (status == "failed") g.state = "stopped: point " + p.name + " failed (see its log; --retry-failed)";

@@ -1,6 +1,6 @@
 // The boundary search of a campaign (docs/campaigns.md, "Searching for phi_m"): per group, bisection of the searched
-// key between the value nearest the boundary that flows and the one that jams. The state is replayed from the points' records
-// each time, so a resumed or repeated sweep decides exactly as the first one did.
+// key between the value nearest the boundary that flows and the one that jams. The state is replayed from the points'
+// records each time, so a resumed or repeated sweep decides exactly as the first one did.
 #pragma once
 #include <filesystem>
 #include <string>

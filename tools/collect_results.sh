@@ -9,6 +9,14 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 runs=${1:-$root/runs}
 suspend=${2:-$root/build/bin/suspend}
+# copy_table RUN_FOLDER RESULTS_FOLDER: the campaign table, with paths relative to the repository, not this machine's
+# checkout
+copy_table() {
+  mkdir -p "$2"
+  for f in campaign.json campaign.csv; do
+    sed "s|$root/||g" "$1/$f" > "$2/$f.part" && mv "$2/$f.part" "$2/$f"
+  done
+}
 # name in runs/ | folder under results/phim/
 for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise_boundary" \
     "pairwise_boundary_low_friction|pairwise_boundary_low_friction" \
@@ -16,12 +24,7 @@ for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise
     "fcm_seed_scatter|fcm_seed_scatter"; do
   IFS='|' read -r name method <<< "$entry"
   out="$root/results/phim/$method"
-  if [ -f "$runs/$name/campaign.json" ]; then
-    mkdir -p "$out"
-    for f in campaign.json campaign.csv; do  # paths relative to the repository, not this machine's checkout
-      sed "s|$root/||g" "$runs/$name/$f" > "$out/$f.part" && mv "$out/$f.part" "$out/$f"
-    done
-  fi
+  [ -f "$runs/$name/campaign.json" ] && copy_table "$runs/$name" "$out"
   [ -f "$out/campaign.json" ] || continue
   if [ "$method" = fcm_seed_scatter ]; then  # a seed study, not a phi_m campaign
     /usr/bin/python3 "$root/tools/seed_scatter.py" "$out" > "$out/seed_scatter.txt"
@@ -40,10 +43,7 @@ done
 # Issue 40's normal-stress ensemble: its table, and the means of singular against exact_relative per phi.
 if [ -f "$runs/normal_stress_functions/campaign.json" ]; then
   out="$root/results/normal_stress_functions"
-  mkdir -p "$out"
-  for f in campaign.json campaign.csv; do
-    sed "s|$root/||g" "$runs/normal_stress_functions/$f" > "$out/$f.part" && mv "$out/$f.part" "$out/$f"
-  done
+  copy_table "$runs/normal_stress_functions" "$out"
   for phi in 0.45 0.5 0.55; do
     /usr/bin/python3 "$root/tools/ensemble_means.py" "$out/campaign.json" hydrodynamics.lubrication.functions \
       --where particles.phi=$phi
