@@ -44,6 +44,27 @@ json case_facts(const Point& p) {
   f["g_adh"] = contact["g_adh"] ? contact["g_adh"].as<double>() : 0.0;
   if (n["flow"]["shear_stress"]) f["shear_stress"] = n["flow"]["shear_stress"].as<double>();
   f["strain"] = n["run"]["strain"].as<double>();
+  // The near field and the system size, which the boundary campaigns compare (issue 36): the pairwise two-sphere
+  // functions (FCM's sub-grid lubrication is exact), and the box edge or the particle count it follows from.
+  const YAML::Node lubrication = n["hydrodynamics"]["lubrication"];
+  if (f["model"] == "fcm")
+    f["functions"] = "fcm";
+  else if (lubrication && lubrication["enabled"] && lubrication["enabled"].as<bool>())
+    f["functions"] = lubrication["functions"] ? lubrication["functions"].as<std::string>() : "singular";
+  else
+    f["functions"] = "none";
+  // A start from a file (a search's dense value from a seed's flowing state, listed as its particles.initial) has its
+  // source point's size; a table restored without the source runs cannot resolve it.
+  for (const Assignment& a : p.parameters)
+    if (a.key == "particles.initial") return f;
+  const YAML::Node box = n["box"];
+  if (box && box["length"]) {
+    const double x = box["length"]["x"].as<double>(), y = box["length"]["y"].as<double>(),
+                 z = box["length"]["z"].as<double>();
+    f["box"] = x == y && y == z ? json(x) : json::array({x, y, z});
+  } else if (n["particles"]["count"]) {
+    f["count"] = n["particles"]["count"].as<long>();
+  }
   return f;
 }
 }  // namespace

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Copies the campaign tables of the raw runs (ignored folder runs/) into results/phim/METHOD/ (the phi_m campaigns
-# and issue 34's boundary searches and FCM seed scatter; issue 40's normal-stress ensemble to
-# results/normal_stress_functions/), fits them with `suspend phim` (all points, and phi >= 0.45 only as paper 004 does
+# Copies the campaign tables of the raw runs (ignored folder runs/) into results/phim/METHOD/ (the phi_m campaigns,
+# issue 34's boundary searches and FCM seed scatter, issue 36's boundary searches with the exact near field; issue
+# 40's normal-stress ensemble to results/normal_stress_functions/), fits them with `suspend phim` (all points, and phi >= 0.45 only as paper 004 does
 # for mu_s <= 0.1: METHOD/from_phi0.45/) and redraws the figures, so the committed results follow the campaigns as
 # they fill; a table already committed is fitted again with the current `suspend phim`.
 # usage: tools/collect_results.sh [RUNS_DIR=runs] [SUSPEND=build/bin/suspend]
@@ -21,7 +21,7 @@ copy_table() {
 for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise_boundary" \
     "pairwise_boundary_low_friction|pairwise_boundary_low_friction" \
     "pairwise_boundary_low_friction_low_stress|pairwise_boundary_low_friction_low_stress" \
-    "fcm_seed_scatter|fcm_seed_scatter"; do
+    "pairwise_boundary_exact|pairwise_boundary_exact" "fcm_seed_scatter|fcm_seed_scatter"; do
   IFS='|' read -r name method <<< "$entry"
   out="$root/results/phim/$method"
   [ -f "$runs/$name/campaign.json" ] && copy_table "$runs/$name" "$out"

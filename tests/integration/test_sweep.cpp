@@ -70,6 +70,8 @@ TEST(Sweep, SameTableWithJobsAfterSigkillAndPointByPoint) {
   EXPECT_EQ(ta["points"][2]["name"], "phi0.5_mu0.5");
   EXPECT_EQ(ta["points"][2]["parameters"]["contact.mu"], 0.5);
   EXPECT_EQ(ta["points"][2]["case"]["mu_s"], 0.5);
+  EXPECT_EQ(ta["points"][2]["case"]["functions"], "singular");  // lubrication on, the default two-sphere functions
+  EXPECT_EQ(ta["points"][2]["case"]["count"], 60);
   const Result done = run({"sweep", file, "--out", a, "--status"});
   ASSERT_EQ(done.code, 0) << done.err;
   EXPECT_NE(done.out.find("3 point(s): 3 done"), std::string::npos) << done.out;
