@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Copies the campaign tables of the raw runs (ignored folder runs/) into results/phim/METHOD/ (the phi_m campaigns,
 # issue 34's boundary searches and FCM seed scatter, issue 36's boundary searches with the exact near field; issue
-# 40's normal-stress ensemble to results/normal_stress_functions/), fits them with `suspend phim` (all points, and phi >= 0.45 only as paper 004 does
+# 40's normal-stress ensembles to results/normal_stress_functions/ and results/normal_stress_frictional/), fits them with `suspend phim` (all points, and phi >= 0.45 only as paper 004 does
 # for mu_s <= 0.1: METHOD/from_phi0.45/) and redraws the figures, so the committed results follow the campaigns as
 # they fill; a table already committed is fitted again with the current `suspend phim`.
 # usage: tools/collect_results.sh [RUNS_DIR=runs] [SUSPEND=build/bin/suspend]
@@ -48,4 +48,11 @@ if [ -f "$runs/normal_stress_functions/campaign.json" ]; then
     /usr/bin/python3 "$root/tools/ensemble_means.py" "$out/campaign.json" hydrodynamics.lubrication.functions \
       --where particles.phi=$phi
   done > "$out/ensemble_means.txt" 2>&1 || true
+fi
+# Issue 40's frictional (mu = 1) normal-stress ensemble: its table and the means per phi.
+if [ -f "$runs/normal_stress_frictional/campaign.json" ]; then
+  out="$root/results/normal_stress_frictional"
+  copy_table "$runs/normal_stress_frictional" "$out"
+  /usr/bin/python3 "$root/tools/ensemble_means.py" "$out/campaign.json" particles.phi > "$out/ensemble_means.txt" 2>&1 \
+    || true
 fi

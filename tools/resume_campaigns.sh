@@ -4,7 +4,7 @@
 # runs/pairwise_boundary_low_friction_low_stress, from cases/phim/pairwise_boundary*.yaml) and FCM seed scatter (runs/fcm_seed_scatter); tools/collect_results.sh copies
 # their tables and fits to results/phim/NAME as they fill; issue 40's normal-stress ensemble
 # (runs/normal_stress_functions, cases/validation/normal_stress_functions.yaml: singular against exact two-sphere
-# functions on the frictionless case); issue 36's boundary searches at mu_s 0.3 and 1 with the exact two-sphere
+# functions on the frictionless case, and runs/normal_stress_frictional: paper 000's case FR at phi 0.45-0.56); issue 36's boundary searches at mu_s 0.3 and 1 with the exact two-sphere
 # functions (runs/pairwise_boundary_exact, cases/phim/pairwise_boundary_exact.yaml);
 # issue 35's accuracy ensembles of the default step (runs/step_frictionless, runs/step_ensemble: the packings of
 # each case run by the current engine, set against the same campaigns run by the engine before issue 35,
@@ -42,6 +42,7 @@ campaigns=(
   "pairwise_boundary_low_friction|$root/cases/phim/pairwise_boundary_low_friction.yaml|$root/results/phim/pairwise_boundary_low_friction/campaign.json"
   "pairwise_boundary_low_friction_low_stress|$root/cases/phim/pairwise_boundary_low_friction_low_stress.yaml|$root/results/phim/pairwise_boundary_low_friction_low_stress/campaign.json"
   "normal_stress_functions|$root/cases/validation/normal_stress_functions.yaml|$root/results/normal_stress_functions/campaign.json"
+  "normal_stress_frictional|$root/cases/validation/normal_stress_frictional.yaml|$root/results/normal_stress_frictional/campaign.json"
   "pairwise_boundary_exact|$root/cases/phim/pairwise_boundary_exact.yaml|$root/results/phim/pairwise_boundary_exact/campaign.json"
   "step_frictionless|$root/cases/validation/step_control_ensemble_frictionless.yaml|$root/results/step_control/frictionless_after/campaign.json"
   "step_ensemble|$root/cases/validation/step_control_ensemble.yaml|$root/results/step_control/adhesive_after/campaign.json"

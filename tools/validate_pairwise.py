@@ -4,6 +4,11 @@
 usage: validate_pairwise.py frictionless DIR_phi1 DIR_phi2 ... [--tolerance 0.2]
        validate_pairwise.py frictional   DIR_phi1 ...          [--tolerance 0.25]
        validate_pairwise.py thickening   DIR_low_rate DIR_high_rate [--factor 3]
+       validate_pairwise.py normal_stress frictionless|frictional DIR ...
+The normal_stress check holds the signs docs/validation.md section 4 found, each at least one standard error from
+zero (the reduced CI runs are short): N1 < 0, N2 < 0 and Pi > 0; frictionless, the contacts' N1 > 0 > their N2
+and a lubrication N1 below zero that outweighs the contacts' (the negative N1 is hydrodynamic); frictional, the
+contacts' N2 < 0.
 Each DIR holds a summary.json. Prints one line per run and exits 1 if a criterion fails.
 """
 import json
@@ -23,7 +28,31 @@ def load(d):
         sys.exit(f"error: {d}/summary.json: {e}")
 
 
+def check_normal_stress(kind, d):
+    """Signs of N1, N2, Pi and of their contact and lubrication parts, each at least one standard error from zero."""
+    s = load(d)
+    parts = s["contributions"]
+    checks = [("N1 < 0", s["N1"], -1), ("N2 < 0", s["N2"], -1), ("Pi > 0", s["Pi"], +1)]
+    if kind == "frictionless":
+        contact, lub = parts["contact_normal"]["N1"], parts["lubrication"]["N1"]
+        checks += [("contact N1 > 0", contact, +1), ("contact N2 < 0", parts["contact_normal"]["N2"], -1),
+                   ("lubrication N1 < 0", lub, -1),
+                   ("lubrication N1 + contact N1 < 0", {"mean": lub["mean"] + contact["mean"],
+                                                        "sem": (lub["sem"] ** 2 + contact["sem"] ** 2) ** 0.5}, -1)]
+    else:
+        checks += [("contact N2 < 0", parts["contact_normal"]["N2"], -1)]
+    ok = True
+    for name, v, sign in checks:
+        good = sign * v["mean"] >= v["sem"] >= 0
+        ok &= good
+        print(f"normal stress {kind:12s} phi {s['phi']:.4f}  {name:32s} {v['mean']:+9.4g} +- {v['sem']:.2g}"
+              f"  {'ok' if good else 'FAIL'}")
+    return ok
+
+
 def main(argv):
+    if len(argv) >= 4 and argv[1] == "normal_stress" and argv[2] in ("frictionless", "frictional"):
+        return 0 if all([check_normal_stress(argv[2], d) for d in argv[3:]]) else 1
     if len(argv) < 3 or argv[1] not in ("frictionless", "frictional", "thickening"):
         print(__doc__.split("\n\n")[1].split("\nEach")[0], file=sys.stderr)
         return 2

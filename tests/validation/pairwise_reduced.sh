@@ -19,3 +19,6 @@ check=$src/tools/validate_pairwise.py
 python3 "$check" frictionless "$work/fl45" "$work/fl55" --tolerance 0.3
 python3 "$check" frictional "$work/fr45" --tolerance 0.35
 python3 "$check" thickening "$work/cl_low" "$work/cl_high" --factor 3
+# Signs of the normal stresses and of their contact and lubrication parts (docs/validation.md section 4).
+python3 "$check" normal_stress frictionless "$work/fl45" "$work/fl55"
+python3 "$check" normal_stress frictional "$work/fr45"
