@@ -25,8 +25,11 @@ import os
 import subprocess
 import sys
 
-import h5py
-import numpy as np
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from debian_python import require  # noqa: E402
+
+USAGE = ("usage: tools/frozen_stress.py CASE OUT [--from 2] [--spacing 0.5] [--configs 4] [--set KEY=VALUE ...] "
+         "[--suspend build/bin/suspend]")
 
 MODELS = {
     "pairwise_force_dipole": ["hydrodynamics.model=pairwise", "hydrodynamics.lubrication.stress=force_dipole"],
@@ -50,6 +53,8 @@ def run(suspend, case, out, sets):
 
 
 def first_step_stress(run_dir):
+    import h5py
+    import numpy as np
     with h5py.File(os.path.join(run_dir, "run.h5"), "r") as f:
         s = f["series"]["stress"]
         rate = float(f["series"]["shear_rate"][0])
@@ -63,12 +68,16 @@ def moments(t):
 
 
 def mean_sem(values):
+    import numpy as np
     v = np.array(values, dtype=float)
     return v.mean(), (v.std(ddof=1) / math.sqrt(len(v)) if len(v) > 1 else float("nan"))
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    if len(sys.argv) < 3 or "-h" in sys.argv or "--help" in sys.argv:
+        print(__doc__.split("usage:")[0].strip() + "\n\n" + USAGE, file=sys.stderr)
+        sys.exit(2)
+    p = argparse.ArgumentParser(usage=USAGE)
     p.add_argument("case")
     p.add_argument("out")
     p.add_argument("--from", dest="start", type=float, default=2.0)
@@ -77,6 +86,9 @@ def main():
     p.add_argument("--set", action="append", default=[])
     p.add_argument("--suspend", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin", "suspend"))
     a = p.parse_args()
+    if not os.path.isfile(a.case):
+        sys.exit(print("error: %s: no such case file" % a.case, file=sys.stderr) or 2)
+    require("h5py", "numpy")
     case = os.path.abspath(a.case)
     os.makedirs(a.out, exist_ok=True)
     sets = a.set + ["run.average_from=0"]

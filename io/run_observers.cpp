@@ -1,0 +1,190 @@
+#include "io/run_observers.hpp"
+
+#include <atomic>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "dem/integrate/time_step_control.hpp"
+#include "io/runner.hpp"
+
+namespace suspend::io {
+
+namespace {
+std::atomic<int> stop_signal{0};
+extern "C" void on_stop_signal(int sig) { stop_signal.store(sig); }
+}  // namespace
+
+// Ctrl-C, kill, a closed terminal (SIGHUP) and a closed pipe for the progress lines (`suspend run ... | head`,
+// SIGPIPE) all stop the run at a checkpoint; left at their defaults, the last two killed it with run.h5 open.
+void install_stop_handlers() {
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) std::signal(sig, on_stop_signal);
+}
+
+double next_multiple(double clock, double every) { return (std::floor(clock / every + 1e-9) + 1.0) * every; }
+
+int end_jammed(RunContext& r, double rate, double over_time) {
+  RunRecord& record = r.record;
+  const double threshold = r.c.simulation.flow.shear_stress / r.c.run.jammed_viscosity;
+  record.file().write_snapshot(snapshot_of(r.sim));
+  record.save();
+  record.finish_outputs();
+  r.progress.finish();
+  const double from = record.write_partial_summary(
+      "jammed", {{"jammed",
+                  {{"mean_shear_rate", rate},
+                   {"over_time", over_time},
+                   {"threshold", threshold},
+                   // Arrest of a state that flowed, or of one that never did (a packing arrested at once):
+                   // it flowed first when it sheared by more than one jamming window before it stopped.
+                   {"strain_reached", r.strain()},
+                   {"flowed_first", r.strain() > r.c.run.jammed_strain}}}});
+  std::fprintf(stderr,
+               "jammed: the mean shear rate was %.3g over the last %.4g time units (threshold "
+               "Sigma/run.jammed.viscosity = %.3g) at strain %.4g; summary.json averages from strain %.4g\n",
+               rate, over_time, threshold, r.strain(), from);
+  record.file().close();
+  return exit_jammed;
+}
+
+SeriesWriter::SeriesWriter(RunContext& r)
+    : by_time_(r.c.simulation.flow.oscillatory()),
+      trigger_(r.clock.next_series,
+               by_time_ ? r.c.simulation.flow.period() / r.c.run.output.series_per_cycle
+                        : r.c.run.output.series_every,
+               strain_tolerance * (by_time_ ? r.c.simulation.flow.period() / r.c.run.output.series_per_cycle : 1.0)) {}
+
+void SeriesWriter::evaluated(RunContext& r) {
+  const Simulation& sim = r.sim;
+  const double strain = r.strain();
+  const double clock = by_time_ ? sim.state().time : strain;
+  if (!trigger_.due(clock)) return;
+  SeriesRow row;
+  row.step = sim.state().step;
+  row.time = sim.state().time;
+  row.strain = sim.state().strain;
+  row.accumulated_strain = sim.state().accumulated_strain;
+  row.shear_rate = sim.shear_rate();
+  row.dt = sim.time_step();
+  row.contacts = static_cast<double>(sim.contact_count());
+  row.max_overlap = sim.max_overlap();
+  row.solver_iterations = sim.solver_iterations();
+  row.solver_residual = sim.solver_residual();
+  row.stress = sim.stress();
+  r.record.file().append(row);
+  trigger_.fire(clock);
+  if (strain >= r.c.run.average_from) {
+    stress_sum_ += row.stress.total()(0, 1);
+    rate_sum_ += row.shear_rate;
+  }
+}
+
+double SeriesWriter::running_viscosity(const Simulation& sim) const {
+  return rate_sum_ != 0.0 ? stress_sum_ / rate_sum_ : sim.stress().total()(0, 1) / sim.shear_rate();
+}
+
+SnapshotWriter::SnapshotWriter(RunContext& r)
+    : trigger_(r.clock.next_snapshot, r.c.run.output.snapshot_every, strain_tolerance) {}
+
+void SnapshotWriter::evaluated(RunContext& r) {
+  const double strain = r.strain();
+  if (!trigger_.due(strain)) return;
+  r.record.file().write_snapshot(snapshot_of(r.sim));
+  trigger_.fire(strain);
+}
+
+void ProgressReporter::evaluated(RunContext& r) {
+  r.progress.update(r.strain(), r.sim.state().step, series_.running_viscosity(r.sim));
+}
+
+PaceGuard::PaceGuard(RunContext& r) : slow_start_strain_(r.strain()), slow_start_time_(r.sim.state().time) {}
+
+std::optional<int> PaceGuard::advanced(RunContext& r) {
+  constexpr int slow_steps_allowed = 1000;
+  const double strain = r.strain(), end = r.c.run.strain;
+  if (std::abs(strain - r.step_start_strain) * max_run_steps >= end) {
+    slow_steps_ = 0;
+    slow_start_strain_ = strain;
+    slow_start_time_ = r.sim.state().time;
+    return std::nullopt;
+  }
+  if (++slow_steps_ < slow_steps_allowed) return std::nullopt;
+  const Flow& flow = r.c.simulation.flow;
+  const double over = r.sim.state().time - slow_start_time_;
+  const double rate = std::abs(strain - slow_start_strain_) / over;
+  if (flow.control == FlowControl::stress && !flow.oscillatory() && over > 0.0 &&
+      rate < flow.shear_stress / r.c.run.jammed_viscosity)
+    return end_jammed(r, rate, over);
+  std::ostringstream s;
+  s << "no progress: the last " << slow_steps_ << " steps advanced the strain by "
+    << std::abs(strain - slow_start_strain_) << " in all (time step " << r.sim.time_step() << ", shear rate "
+    << r.sim.shear_rate() << "); at this pace run.strain = " << end << " needs more than " << max_run_steps
+    << " steps";
+  throw NumericalError(s.str());
+}
+
+std::optional<int> StopOnSignal::advanced(RunContext& r) {
+  const int sig = stop_signal.load();
+  if (!sig || !r.before_end()) return std::nullopt;
+  r.record.save();
+  r.record.finish_outputs();
+  r.progress.finish();
+  r.record.write_partial_summary("stopped", {});
+  std::cerr << "stopped by signal " << sig << " at strain " << r.strain()
+            << "; continue with: " << restart_command(r.c, r.record.checkpoint_path(), r.threads) << "\n";
+  return 128 + sig;
+}
+
+std::optional<int> JammingDetector::advanced(RunContext& r) {
+  const Flow& flow = r.c.simulation.flow;
+  const double window = r.c.run.jammed_strain * r.c.run.jammed_viscosity / flow.shear_stress;
+  const SimulationState& st = r.sim.state();
+  if (st.time - r.clock.jam_window_time < window) return std::nullopt;
+  if (r.strain() - r.clock.jam_window_strain < r.c.run.jammed_strain)
+    return end_jammed(r, (r.strain() - r.clock.jam_window_strain) / (st.time - r.clock.jam_window_time),
+                      st.time - r.clock.jam_window_time);
+  r.clock.jam_window_time = st.time;
+  r.clock.jam_window_strain = r.strain();
+  return std::nullopt;
+}
+
+PeriodicCheckpoint::PeriodicCheckpoint(RunContext& r)
+    : trigger_(r.clock.next_checkpoint, r.c.run.output.checkpoint_every, strain_tolerance),
+      wall0_(std::chrono::steady_clock::now()) {}
+
+std::optional<int> PeriodicCheckpoint::advanced(RunContext& r) {
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
+  const double strain = r.strain();
+  if (!r.before_end() || !(trigger_.due(strain) || wall >= r.c.run.output.checkpoint_seconds)) return std::nullopt;
+  trigger_.fire(strain);
+  r.record.save();
+  wall0_ = std::chrono::steady_clock::now();
+  if (const std::optional<std::string> full = room_.after_checkpoint(r.record.run_path(), r.record.checkpoint_path())) {
+    r.progress.finish();
+    std::cerr << "error: " << *full << "; stopped at the checkpoint of strain " << strain
+              << " while everything is complete; once there is room, continue with: "
+              << restart_command(r.c, r.record.checkpoint_path(), r.threads) << "\n";
+    return exit_output_error;
+  }
+  return std::nullopt;
+}
+
+std::vector<std::unique_ptr<RunObserver>> run_observers(RunContext& r) {
+  std::vector<std::unique_ptr<RunObserver>> list;
+  auto series = std::make_unique<SeriesWriter>(r);
+  const SeriesWriter& rows = *series;
+  list.push_back(std::move(series));
+  list.push_back(std::make_unique<SnapshotWriter>(r));
+  list.push_back(std::make_unique<ProgressReporter>(rows));
+  list.push_back(std::make_unique<PaceGuard>(r));
+  list.push_back(std::make_unique<StopOnSignal>());
+  const Flow& flow = r.c.simulation.flow;
+  if (flow.control == FlowControl::stress && !flow.oscillatory()) list.push_back(std::make_unique<JammingDetector>());
+  list.push_back(std::make_unique<PeriodicCheckpoint>(r));
+  return list;
+}
+
+}  // namespace suspend::io
