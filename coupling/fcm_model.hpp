@@ -58,7 +58,7 @@ struct FcmParams {
 
 // The hydrodynamic model (dem/hydrodynamic_model.hpp) of FCM + sub-grid lubrication: each solve assembles the
 // sub-grid pair terms of the configuration (with implicit contacts their steps too) and calls the coupled solve.
-class FcmModel final : public HydrodynamicModel {
+class FcmModel final : public OverdampedModel {
  public:
   // Validates the fcm.* keys and refuses what FCM cannot do (inertia, wavy shear, implicit contacts without the
   // sub-grid correction): InputError naming the key.

@@ -1,14 +1,8 @@
 #include "dem/hydrodynamic_model.hpp"
 
 #include <algorithm>
-#include <stdexcept>
 
 namespace suspend {
-
-const ExplicitResponse& HydrodynamicModel::explicit_forces(const HydroLoad&, double, const Eigen::VectorXd&,
-                                                           const std::vector<double>&, const std::vector<double>&) {
-  throw std::logic_error("this hydrodynamic model has no explicit (inertial) forces");
-}
 
 RadiusClasses::RadiusClasses(const std::vector<double>& particle_radius) : radius(particle_radius) {
   std::sort(radius.begin(), radius.end());

@@ -8,6 +8,8 @@
 //   FcmModel       FCM + sub-grid lubrication      (coupling/fcm_model.hpp)
 // Flow control is not the model's: under imposed stress the step asks for the unit-rate and the force-driven parts
 // (every model is linear in (gammadot, F)) and picks the rate itself. One virtual call per step, none per pair.
+// An overdamped step asks a model for a solve (OverdampedModel), an explicit (inertial) step for forces at given
+// velocities (InertialModel); each model implements the one interface it has.
 // Units: eta_0 = 1, lengths in a_1, time in 1/gammadot_ref.
 #pragma once
 #include <Eigen/Dense>
@@ -77,22 +79,30 @@ class HydrodynamicModel {
   virtual ~HydrodynamicModel() = default;
   // Neighbour-list range the model's pair terms need (0: none).
   virtual double pair_range() const { return 0.0; }
-  // true: explicit forces (run.integrator = inertial); false: overdamped solves.
-  virtual bool inertial() const { return false; }
-  // Overdamped, imposed rate: the velocities in the flow at `rate` with the load's forces. The response is the
-  // model's own and stays valid until its next call. Throws NumericalError (message starts with load.where).
-  virtual HydroResponse& solve(const HydroLoad& load, double rate) = 0;
-  // Overdamped, imposed stress: the unit-rate part (no forces) and the force-driven part (rate 0).
-  virtual std::pair<HydroResponse&, HydroResponse&> solve_parts(const HydroLoad& load) = 0;
-  // Inertial: the hydrodynamic forces at disturbance velocities dv (6 per particle, lab velocity minus U_inf,
-  // Omega_inf) in the flow at `rate`; mass and moment per particle for the rate bound.
-  virtual const ExplicitResponse& explicit_forces(const HydroLoad& load, double rate, const Eigen::VectorXd& dv,
-                                                  const std::vector<double>& mass,
-                                                  const std::vector<double>& moment);
   // Everything the next solve's warm start depends on (checkpointed, so a restart continues bit for bit), and
   // its restoration: `parts` when the next solves are solve_parts. A state that does not fit is ignored.
   virtual std::vector<double> warm_start_state() const { return {}; }
   virtual void set_warm_start_state(const std::vector<double>& /*state*/, std::size_t /*n*/, bool /*parts*/) {}
+};
+
+// What an overdamped step asks (run.integrator = overdamped): the velocities that balance the forces.
+class OverdampedModel : public HydrodynamicModel {
+ public:
+  // Imposed rate: the velocities in the flow at `rate` with the load's forces. The response is the model's own and
+  // stays valid until its next call. Throws NumericalError (message starts with load.where).
+  virtual HydroResponse& solve(const HydroLoad& load, double rate) = 0;
+  // Imposed stress: the unit-rate part (no forces) and the force-driven part (rate 0).
+  virtual std::pair<HydroResponse&, HydroResponse&> solve_parts(const HydroLoad& load) = 0;
+};
+
+// What an explicit step asks (run.integrator = inertial): the hydrodynamic forces at disturbance velocities dv (6
+// per particle, lab velocity minus U_inf, Omega_inf) in the flow at `rate`; mass and moment per particle for the
+// rate bound.
+class InertialModel : public HydrodynamicModel {
+ public:
+  virtual const ExplicitResponse& explicit_forces(const HydroLoad& load, double rate, const Eigen::VectorXd& dv,
+                                                  const std::vector<double>& mass,
+                                                  const std::vector<double>& moment) = 0;
 };
 
 // Radii classes: the distinct radii in increasing order and each particle's class (pair tables are per class).

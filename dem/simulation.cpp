@@ -47,7 +47,12 @@ Simulation::Simulation(SimulationState state, const Box& box, const SimulationPa
                 state_.contacts) {
   params_.validate();
   const bool inertial = params_.integrator == Integrator::inertial;
-  if (model_->inertial() != inertial)
+  // The integrator asks the model for the one interface it uses.
+  if (inertial)
+    inertial_ = dynamic_cast<InertialModel*>(model_.get());
+  else
+    overdamped_ = dynamic_cast<OverdampedModel*>(model_.get());
+  if (inertial ? !inertial_ : !overdamped_)
     throw InputError(inertial ? "run.integrator = inertial: this hydrodynamic model is overdamped only"
                               : "this hydrodynamic model needs run.integrator = inertial");
   box_.set_strain(state_.strain);
@@ -113,11 +118,11 @@ double Simulation::overdamped_velocities(const HydroLoad& load) {
   const std::size_t n = p.size();
   const HydroResponse* response = nullptr;
   if (params_.flow.control == FlowControl::rate) {
-    response = &model_->solve(load, rate_);
+    response = &overdamped_->solve(load, rate_);
   } else {
     // Sigma_xy = gammadot Sigma_H + Sigma_C from the unit-rate and the force-driven parts; the rate that meets the
     // target combines them.
-    auto [shear, forced] = model_->solve_parts(load);
+    auto [shear, forced] = overdamped_->solve_parts(load);
     const double volume = box_.volume();
     const double sigma_h = 1.0 + shear.stress.total()(0, 1) / volume;
     const double sigma_c = (contacts_.sums().virial.total()(0, 1) + forced.stress.total()(0, 1)) / volume;
@@ -151,7 +156,7 @@ double Simulation::inertial_velocities(const HydroLoad& load) {
       disturbance_[6 * i + k] = v[12 * i + k] - f.velocity(p.position[i])[k];
       disturbance_[6 * i + 3 + k] = v[12 * i + 3 + k] - f.angular_velocity(p.position[i])[k];
     }
-  const ExplicitResponse& hydro = model_->explicit_forces(load, rate_, disturbance_, mass_, moment_);
+  const ExplicitResponse& hydro = inertial_->explicit_forces(load, rate_, disturbance_, mass_, moment_);
   relaxation_rate_ = hydro.relaxation_rate;
   iterations_ = 0;
   residual_ = 0.0;

@@ -134,6 +134,8 @@ class Simulation {
   Box box_;
   SimulationParams params_;
   std::unique_ptr<HydrodynamicModel> model_;
+  OverdampedModel* overdamped_ = nullptr;  // model_ as an overdamped step asks it (run.integrator = overdamped)
+  InertialModel* inertial_ = nullptr;      // model_ as an explicit step asks it (run.integrator = inertial)
   double a_min_ = 1.0;  // smallest radius (overlap bound, time-step bound)
   ContactStage contacts_;
   Eigen::VectorXd disturbance_;

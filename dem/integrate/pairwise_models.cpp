@@ -1,7 +1,6 @@
 #include "dem/integrate/pairwise_models.hpp"
 
 #include <numbers>
-#include <stdexcept>
 
 #include "core/error.hpp"
 #include "dem/hydro/stokes_drag.hpp"
@@ -89,14 +88,6 @@ ExplicitPairwiseModel::ExplicitPairwiseModel(const Particles& p, const Flow& flo
                                              const ResistanceSolverParams& params)
     : flow_(flow), lubrication_range_(params.lubrication.outer_cutoff), classes_(p.radius) {
   if (lubrication) explicit_.emplace(classes_.radius, params.lubrication, params.lubrication_stress);
-}
-
-HydroResponse& ExplicitPairwiseModel::solve(const HydroLoad&, double) {
-  throw std::logic_error("the inertial model has explicit forces, not an overdamped solve");
-}
-
-std::pair<HydroResponse&, HydroResponse&> ExplicitPairwiseModel::solve_parts(const HydroLoad&) {
-  throw std::logic_error("the inertial model has explicit forces, not an overdamped solve");
 }
 
 const ExplicitResponse& ExplicitPairwiseModel::explicit_forces(const HydroLoad& load, double rate,

@@ -23,7 +23,7 @@ namespace suspend {
 
 struct SimulationParams;
 
-class StokesDragModel final : public HydrodynamicModel {
+class StokesDragModel final : public OverdampedModel {
  public:
   explicit StokesDragModel(const Flow& flow) : flow_(flow) {}
   HydroResponse& solve(const HydroLoad& load, double rate) override;
@@ -36,7 +36,7 @@ class StokesDragModel final : public HydrodynamicModel {
   HydroResponse out_, force_out_;
 };
 
-class PairwiseResistanceModel final : public HydrodynamicModel {
+class PairwiseResistanceModel final : public OverdampedModel {
  public:
   PairwiseResistanceModel(const Particles& p, const Flow& flow, const ResistanceSolverParams& params);
   double pair_range() const override { return params_.lubrication.outer_cutoff; }
@@ -55,14 +55,11 @@ class PairwiseResistanceModel final : public HydrodynamicModel {
   SolveResult out_, force_out_;
 };
 
-class ExplicitPairwiseModel final : public HydrodynamicModel {
+class ExplicitPairwiseModel final : public InertialModel {
  public:
   // lubrication: pairwise lubrication (else Stokes drag alone).
   ExplicitPairwiseModel(const Particles& p, const Flow& flow, bool lubrication, const ResistanceSolverParams& params);
   double pair_range() const override { return explicit_ ? lubrication_range_ : 0.0; }
-  bool inertial() const override { return true; }
-  HydroResponse& solve(const HydroLoad& load, double rate) override;
-  std::pair<HydroResponse&, HydroResponse&> solve_parts(const HydroLoad& load) override;
   const ExplicitResponse& explicit_forces(const HydroLoad& load, double rate, const Eigen::VectorXd& dv,
                                           const std::vector<double>& mass,
                                           const std::vector<double>& moment) override;
