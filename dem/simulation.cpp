@@ -67,33 +67,15 @@ Simulation::Simulation(SimulationState state, const Box& box, const SimulationPa
   rate_ = state_.shear_rate;
   model_->set_warm_start_state(state_.warm_start, n, params_.flow.control == FlowControl::stress);
   state_.warm_start.clear();
-  if (inertial) {
-    mass_.resize(n);
-    moment_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const double a = p.radius[i];
-      mass_[i] = params_.stokes_number * (4.0 / 3.0) * pi * a * a * a;
-      moment_[i] = 0.4 * mass_[i] * a * a;
-    }
-    if (state_.verlet.empty()) {
-      // Start from rest relative to the imposed flow with zero acceleration: with last_dt = 0 the first
-      // evaluation gives u^0 = U_inf and a^0 = F(x^0, U_inf) / m, as eq. 15 needs.
-      const hydro::WavyShear f = flow(rate_);
-      state_.verlet.assign(12 * n, 0.0);
-      for (std::size_t i = 0; i < n; ++i) {
-        const Vec3 u = hydro::faxen_velocity(p.radius[i], p.position[i], f), w = f.angular_velocity(p.position[i]);
-        for (int k = 0; k < 3; ++k) state_.verlet[12 * i + k] = u[k], state_.verlet[12 * i + 3 + k] = w[k];
-      }
-    } else if (state_.verlet.size() != 12 * n) {
-      throw InputError("inertial state: 12 numbers per particle expected, got " + std::to_string(state_.verlet.size()));
-    }
-  }
+  if (inertial) verlet_.emplace(p, params_.stokes_number, state_.verlet, flow(rate_));
+  state_.verlet.clear();  // the integrator's now (state_with_contacts gives it back)
 }
 
 SimulationState Simulation::state_with_contacts() const {
   SimulationState s = state_;
   s.contacts = contacts_.histories();
   s.warm_start = model_->warm_start_state();
+  if (verlet_) s.verlet = verlet_->saved();
   return s;
 }
 
@@ -145,32 +127,11 @@ double Simulation::overdamped_velocities(const HydroLoad& load) {
 }
 
 double Simulation::inertial_velocities(const HydroLoad& load) {
-  Particles& p = state_.particles;
-  const std::size_t n = p.size();
-  const hydro::WavyShear f = flow(rate_);
-  const std::vector<double>& v = state_.verlet;
-  // Hydrodynamic force and torque at the half-step velocities (explicit, paper 000 eq. 15c).
-  disturbance_.resize(6 * static_cast<Eigen::Index>(n));
-  for (std::size_t i = 0; i < n; ++i)
-    for (int k = 0; k < 3; ++k) {
-      disturbance_[6 * i + k] = v[12 * i + k] - f.velocity(p.position[i])[k];
-      disturbance_[6 * i + 3 + k] = v[12 * i + 3 + k] - f.angular_velocity(p.position[i])[k];
-    }
-  const ExplicitResponse& hydro = inertial_->explicit_forces(load, rate_, disturbance_, mass_, moment_);
-  relaxation_rate_ = hydro.relaxation_rate;
+  double max_speed = 0.0;
+  const ExplicitResponse& hydro =
+      verlet_->velocities(*inertial_, load, rate_, flow(rate_), state_.last_dt, state_.particles, max_speed);
   iterations_ = 0;
   residual_ = 0.0;
-  acceleration_.resize(6 * n);
-  double max_speed = 0.0;
-  const double half = 0.5 * state_.last_dt;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 a_lin = (contacts_.sums().force[i] + hydro.force.segment<3>(6 * i)) / mass_[i];
-    const Vec3 a_ang = (contacts_.sums().torque[i] + hydro.force.segment<3>(6 * i + 3)) / moment_[i];
-    for (int k = 0; k < 3; ++k) acceleration_[6 * i + k] = a_lin[k], acceleration_[6 * i + 3 + k] = a_ang[k];
-    p.velocity[i] = Vec3(v[12 * i], v[12 * i + 1], v[12 * i + 2]) + half * a_lin;  // eq. 15d
-    p.angular_velocity[i] = Vec3(v[12 * i + 3], v[12 * i + 4], v[12 * i + 5]) + half * a_ang;
-    max_speed = std::max(max_speed, (p.velocity[i] - f.velocity(p.position[i])).norm());
-  }
   finish_stress(hydro.stress);
   contact_change_ = nullptr;
   return max_speed;
@@ -203,12 +164,9 @@ double Simulation::next_time_step(double max_speed) const {
   if (ts.mode == TimeStepParams::Mode::fixed) {
     dt = ts.fixed;
   } else if (params_.integrator == Integrator::inertial) {
-    const double k = stiffness_scale(params_.contact);
     dt = std::abs(rate_) > 0.0 ? ts.max / std::abs(rate_) : ts.max;
     if (max_speed > 0.0) dt = std::min(dt, ts.max_displacement / max_speed);
-    const double m_min = *std::min_element(mass_.begin(), mass_.end());
-    dt = std::min(dt, ts.stability * std::sqrt(m_min / k));
-    if (relaxation_rate_ > 0.0) dt = std::min(dt, ts.stability / relaxation_rate_);
+    dt = std::min(dt, verlet_->stability_time_step(stiffness_scale(params_.contact), ts.stability));
   } else if (!ts.implicit_contacts) {
     dt = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt, 0.0, pair_rate(rate_));
   }
@@ -218,13 +176,7 @@ double Simulation::next_time_step(double max_speed) const {
 void Simulation::evaluate() {
   Particles& p = state_.particles;
   const std::size_t n = p.size();
-  const bool inertial = params_.integrator == Integrator::inertial;
-  if (inertial)  // the contact laws see the half-step velocities (eq. 15c)
-    for (std::size_t i = 0; i < n; ++i) {
-      const double* v = state_.verlet.data() + 12 * i;
-      p.velocity[i] = Vec3(v[0], v[1], v[2]);
-      p.angular_velocity[i] = Vec3(v[3], v[4], v[5]);
-    }
+  if (verlet_) verlet_->set_contact_velocities(p);  // the contact laws see the half-step velocities (eq. 15c)
   // 1. Contacts, with the image velocity of the last step's rate (their velocities are that step's).
   const double t0 = omp_get_wtime();
   const auto overlap = contacts_.evaluate(p, box_, state_.shear_rate * box_.length().y(), params_.contact,
@@ -246,7 +198,7 @@ void Simulation::evaluate() {
   // then the stress.
   rate_ = params_.flow.control == FlowControl::rate ? params_.flow.rate(state_.time, state_.accumulated_strain)
                                                     : state_.shear_rate;
-  double max_speed = inertial ? inertial_velocities(load(implicit)) : overdamped_velocities(load(implicit));
+  double max_speed = verlet_ ? inertial_velocities(load(implicit)) : overdamped_velocities(load(implicit));
   // Implicit contacts: the step was chosen from the last step's motion. When this step's own motion needs a much
   // shorter one (the rate under imposed stress jumps as a force chain lets go, a contact opens), solve again with it.
   const TimeStepParams& ts = params_.time_step;
@@ -281,22 +233,11 @@ void Simulation::advance() {
   contacts_.store_histories();
   Particles& p = state_.particles;
   const std::size_t n = p.size();
-  const bool inertial = params_.integrator == Integrator::inertial;
   nonaffine_.resize(n);
   const double ly = box_.length().y();
   for (std::size_t i = 0; i < n; ++i) {
-    Vec3 u = p.velocity[i];
-    if (inertial) {  // u^{n+3/2} = u^{n+1} + (dt/2) a^{n+1}; x^{n+2} = x^{n+1} + dt u^{n+3/2} (eqs. 15a-b)
-      double* v = state_.verlet.data() + 12 * i;
-      const double* a = acceleration_.data() + 6 * i;
-      for (int k = 0; k < 3; ++k) {
-        v[k] = p.velocity[i][k] + 0.5 * dt_ * a[k];
-        v[3 + k] = p.angular_velocity[i][k] + 0.5 * dt_ * a[3 + k];
-        v[6 + k] = a[k];
-        v[9 + k] = a[3 + k];
-      }
-      u = Vec3(v[0], v[1], v[2]);
-    }
+    // Inertial: x^{n+2} = x^{n+1} + dt u^{n+3/2} (eqs. 15a-b).
+    const Vec3 u = verlet_ ? verlet_->half_step(i, p, dt_) : p.velocity[i];
     // Drift against the affine simple shear (the list accounts for that); a wave counts as drift.
     nonaffine_[i] = (u - Vec3(rate_ * p.position[i].y(), 0.0, 0.0)) * dt_;
     p.position[i] += u * dt_;
@@ -312,7 +253,7 @@ void Simulation::advance() {
   for (std::size_t i = 0; i < n; ++i) {
     const int crossings = box_.wrap(p.position[i]);
     p.velocity[i].x() -= crossings * rate_ * ly;  // paper 000, eq. 16d
-    if (inertial) state_.verlet[12 * i] -= crossings * rate_ * ly;
+    if (verlet_) verlet_->subtract_velocity_x(i, crossings * rate_ * ly);
   }
   contacts_.record_motion(nonaffine_, std::abs(dstrain));
   evaluated_ = false;

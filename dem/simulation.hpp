@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,7 @@
 #include "dem/hydrodynamic_model.hpp"
 #include "dem/integrate/resistance_solver.hpp"
 #include "dem/integrate/time_step_control.hpp"
+#include "dem/integrate/verlet_integrator.hpp"
 #include "dem/pair_forces.hpp"
 #include "dem/verlet_list.hpp"
 
@@ -138,10 +140,7 @@ class Simulation {
   InertialModel* inertial_ = nullptr;      // model_ as an explicit step asks it (run.integrator = inertial)
   double a_min_ = 1.0;  // smallest radius (overlap bound, time-step bound)
   ContactStage contacts_;
-  Eigen::VectorXd disturbance_;
-  std::vector<double> mass_, moment_;
-  std::vector<double> acceleration_;  // inertial: a^{n+1}, alpha^{n+1} of the current evaluation (6 per particle)
-  double relaxation_rate_ = 0.0;      // inertial: bound on the fastest hydrodynamic relaxation rate
+  std::optional<VerletIntegrator> verlet_;  // run.integrator = inertial: the velocity Verlet and its state
   double rate_ = 1.0;
   int iterations_ = 0;
   double residual_ = 0.0;
