@@ -7,8 +7,8 @@ usage: validate_pairwise.py frictionless DIR_phi1 DIR_phi2 ... [--tolerance 0.2]
        validate_pairwise.py normal_stress frictionless|frictional DIR ...
 The normal_stress check holds the signs docs/validation.md section 4 found, each at least one standard error from
 zero (the reduced CI runs are short): N1 < 0, N2 < 0 and Pi > 0; frictionless, the contacts' N1 > 0 > their N2
-and a lubrication N1 below zero that outweighs the contacts' (the negative N1 is hydrodynamic); frictional, the
-contacts' N2 < 0.
+and a lubrication N1 below zero that outweighs the contacts' (the negative N1 is hydrodynamic) and lies below the
+lubrication N2; frictional, the contacts' N2 < 0 and below their N1 (the order the contacts set).
 Each DIR holds a summary.json. Prints one line per run and exits 1 if a criterion fails.
 """
 import json
@@ -33,14 +33,23 @@ def check_normal_stress(kind, d):
     s = load(d)
     parts = s["contributions"]
     checks = [("N1 < 0", s["N1"], -1), ("N2 < 0", s["N2"], -1), ("Pi > 0", s["Pi"], +1)]
+    def combined(*terms):  # sum of (sign, value) terms, errors added in quadrature
+        return {"mean": sum(sg * v["mean"] for sg, v in terms), "sem": sum(v["sem"] ** 2 for _, v in terms) ** 0.5}
+
     if kind == "frictionless":
-        contact, lub = parts["contact_normal"]["N1"], parts["lubrication"]["N1"]
-        checks += [("contact N1 > 0", contact, +1), ("contact N2 < 0", parts["contact_normal"]["N2"], -1),
-                   ("lubrication N1 < 0", lub, -1),
-                   ("lubrication N1 + contact N1 < 0", {"mean": lub["mean"] + contact["mean"],
-                                                        "sem": (lub["sem"] ** 2 + contact["sem"] ** 2) ** 0.5}, -1)]
+        contact, lub = parts["contact_normal"], parts["lubrication"]
+        checks += [("contact N1 > 0", contact["N1"], +1), ("contact N2 < 0", contact["N2"], -1),
+                   ("lubrication N1 < 0", lub["N1"], -1),
+                   ("lubrication N1 + contact N1 < 0", combined((1, lub["N1"]), (1, contact["N1"])), -1),
+                   # the order: the lubrication stress puts N1 below N2 (|N1| > |N2| of its part)
+                   ("lubrication N1 - N2 < 0", combined((1, lub["N1"]), (-1, lub["N2"])), -1)]
     else:
-        checks += [("contact N2 < 0", parts["contact_normal"]["N2"], -1)]
+        normal, tangential = parts["contact_normal"], parts["contact_tangential"]
+        checks += [("contact N2 < 0", normal["N2"], -1),
+                   # the order: the contacts, normal and frictional, put N2 below N1 (|N2| > |N1|)
+                   ("contact N2 - N1 < 0",
+                    combined((1, normal["N2"]), (1, tangential["N2"]), (-1, normal["N1"]), (-1, tangential["N1"])),
+                    -1)]
     ok = True
     for name, v, sign in checks:
         good = sign * v["mean"] >= v["sem"] >= 0
