@@ -5,17 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <sstream>
 
 #include "core/error.hpp"
-#include "dem/hydro/stokes_drag.hpp"
 #include "dem/integrate/pair_motion.hpp"
 #include "dem/integrate/pairwise_models.hpp"
 
 namespace suspend {
-
-using std::numbers::pi;
 
 void SimulationParams::validate() const {
   suspend::validate(contact);
@@ -48,11 +44,9 @@ Simulation::Simulation(SimulationState state, const Box& box, const SimulationPa
   params_.validate();
   const bool inertial = params_.integrator == Integrator::inertial;
   // The integrator asks the model for the one interface it uses.
-  if (inertial)
-    inertial_ = dynamic_cast<InertialModel*>(model_.get());
-  else
-    overdamped_ = dynamic_cast<OverdampedModel*>(model_.get());
-  if (inertial ? !inertial_ : !overdamped_)
+  auto* inertial_model = inertial ? dynamic_cast<InertialModel*>(model_.get()) : nullptr;
+  if (!inertial) overdamped_ = dynamic_cast<OverdampedModel*>(model_.get());
+  if (inertial ? !inertial_model : !overdamped_)
     throw InputError(inertial ? "run.integrator = inertial: this hydrodynamic model is overdamped only"
                               : "this hydrodynamic model needs run.integrator = inertial");
   box_.set_strain(state_.strain);
@@ -67,7 +61,7 @@ Simulation::Simulation(SimulationState state, const Box& box, const SimulationPa
   rate_ = state_.shear_rate;
   model_->set_warm_start_state(state_.warm_start, n, params_.flow.control == FlowControl::stress);
   state_.warm_start.clear();
-  if (inertial) verlet_.emplace(p, params_.stokes_number, state_.verlet, flow(rate_));
+  if (inertial) verlet_.emplace(*inertial_model, p, params_.stokes_number, state_.verlet, flow(rate_));
   state_.verlet.clear();  // the integrator's now (state_with_contacts gives it back)
 }
 
@@ -129,7 +123,7 @@ double Simulation::overdamped_velocities(const HydroLoad& load) {
 double Simulation::inertial_velocities(const HydroLoad& load) {
   double max_speed = 0.0;
   const ExplicitResponse& hydro =
-      verlet_->velocities(*inertial_, load, rate_, flow(rate_), state_.last_dt, state_.particles, max_speed);
+      verlet_->velocities(load, rate_, flow(rate_), state_.last_dt, state_.particles, max_speed);
   iterations_ = 0;
   residual_ = 0.0;
   finish_stress(hydro.stress);
@@ -163,7 +157,7 @@ double Simulation::next_time_step(double max_speed) const {
   double dt = dt_;
   if (ts.mode == TimeStepParams::Mode::fixed) {
     dt = ts.fixed;
-  } else if (params_.integrator == Integrator::inertial) {
+  } else if (verlet_) {
     dt = std::abs(rate_) > 0.0 ? ts.max / std::abs(rate_) : ts.max;
     if (max_speed > 0.0) dt = std::min(dt, ts.max_displacement / max_speed);
     dt = std::min(dt, verlet_->stability_time_step(stiffness_scale(params_.contact), ts.stability));

@@ -137,10 +137,9 @@ class Simulation {
   SimulationParams params_;
   std::unique_ptr<HydrodynamicModel> model_;
   OverdampedModel* overdamped_ = nullptr;  // model_ as an overdamped step asks it (run.integrator = overdamped)
-  InertialModel* inertial_ = nullptr;      // model_ as an explicit step asks it (run.integrator = inertial)
   double a_min_ = 1.0;  // smallest radius (overlap bound, time-step bound)
   ContactStage contacts_;
-  std::optional<VerletIntegrator> verlet_;  // run.integrator = inertial: the velocity Verlet and its state
+  std::optional<VerletIntegrator> verlet_;  // run.integrator = inertial: the velocity Verlet, its state and model
   double rate_ = 1.0;
   int iterations_ = 0;
   double residual_ = 0.0;

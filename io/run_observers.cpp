@@ -16,6 +16,16 @@ namespace suspend::io {
 namespace {
 std::atomic<int> stop_signal{0};
 extern "C" void on_stop_signal(int sig) { stop_signal.store(sig); }
+
+// Imposed steady (or reversing) stress: a flow that stops is a jammed point, its mean rate below this one.
+bool detects_jamming(const Flow& flow) { return flow.control == FlowControl::stress && !flow.oscillatory(); }
+double jamming_rate(const Case& c) { return c.simulation.flow.shear_stress / c.run.jammed_viscosity; }
+
+// Series rows: every series_every of strain, or series_per_cycle per period of an oscillation (in time).
+double series_interval(const Case& c) {
+  const Flow& flow = c.simulation.flow;
+  return flow.oscillatory() ? flow.period() / c.run.output.series_per_cycle : c.run.output.series_every;
+}
 }  // namespace
 
 // Ctrl-C, kill, a closed terminal (SIGHUP) and a closed pipe for the progress lines (`suspend run ... | head`,
@@ -28,7 +38,7 @@ double next_multiple(double clock, double every) { return (std::floor(clock / ev
 
 int end_jammed(RunContext& r, double rate, double over_time) {
   RunRecord& record = r.record;
-  const double threshold = r.c.simulation.flow.shear_stress / r.c.run.jammed_viscosity;
+  const double threshold = jamming_rate(r.c);
   record.file().write_snapshot(snapshot_of(r.sim));
   record.save();
   record.finish_outputs();
@@ -52,10 +62,7 @@ int end_jammed(RunContext& r, double rate, double over_time) {
 
 SeriesWriter::SeriesWriter(RunContext& r)
     : by_time_(r.c.simulation.flow.oscillatory()),
-      trigger_(r.clock.next_series,
-               by_time_ ? r.c.simulation.flow.period() / r.c.run.output.series_per_cycle
-                        : r.c.run.output.series_every,
-               strain_tolerance * (by_time_ ? r.c.simulation.flow.period() / r.c.run.output.series_per_cycle : 1.0)) {}
+      trigger_(r.clock.next_series, series_interval(r.c), strain_tolerance * (by_time_ ? series_interval(r.c) : 1.0)) {}
 
 void SeriesWriter::evaluated(RunContext& r) {
   const Simulation& sim = r.sim;
@@ -112,12 +119,9 @@ std::optional<int> PaceGuard::advanced(RunContext& r) {
     return std::nullopt;
   }
   if (++slow_steps_ < slow_steps_allowed) return std::nullopt;
-  const Flow& flow = r.c.simulation.flow;
   const double over = r.sim.state().time - slow_start_time_;
   const double rate = std::abs(strain - slow_start_strain_) / over;
-  if (flow.control == FlowControl::stress && !flow.oscillatory() && over > 0.0 &&
-      rate < flow.shear_stress / r.c.run.jammed_viscosity)
-    return end_jammed(r, rate, over);
+  if (detects_jamming(r.c.simulation.flow) && over > 0.0 && rate < jamming_rate(r.c)) return end_jammed(r, rate, over);
   std::ostringstream s;
   s << "no progress: the last " << slow_steps_ << " steps advanced the strain by "
     << std::abs(strain - slow_start_strain_) << " in all (time step " << r.sim.time_step() << ", shear rate "
@@ -181,8 +185,7 @@ std::vector<std::unique_ptr<RunObserver>> run_observers(RunContext& r) {
   list.push_back(std::make_unique<ProgressReporter>(rows));
   list.push_back(std::make_unique<PaceGuard>(r));
   list.push_back(std::make_unique<StopOnSignal>());
-  const Flow& flow = r.c.simulation.flow;
-  if (flow.control == FlowControl::stress && !flow.oscillatory()) list.push_back(std::make_unique<JammingDetector>());
+  if (detects_jamming(r.c.simulation.flow)) list.push_back(std::make_unique<JammingDetector>());
   list.push_back(std::make_unique<PeriodicCheckpoint>(r));
   return list;
 }

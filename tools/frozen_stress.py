@@ -87,7 +87,8 @@ def main():
     p.add_argument("--suspend", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin", "suspend"))
     a = p.parse_args()
     if not os.path.isfile(a.case):
-        sys.exit(print("error: %s: no such case file" % a.case, file=sys.stderr) or 2)
+        print("error: %s: no such case file" % a.case, file=sys.stderr)
+        sys.exit(2)
     require("h5py", "numpy")
     case = os.path.abspath(a.case)
     os.makedirs(a.out, exist_ok=True)

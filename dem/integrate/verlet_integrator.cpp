@@ -10,8 +10,9 @@
 
 namespace suspend {
 
-VerletIntegrator::VerletIntegrator(const Particles& p, double stokes_number, const std::vector<double>& saved,
-                                   const hydro::WavyShear& flow) {
+VerletIntegrator::VerletIntegrator(InertialModel& model, const Particles& p, double stokes_number,
+                                   const std::vector<double>& saved, const hydro::WavyShear& flow)
+    : model_(model) {
   const std::size_t n = p.size();
   mass_.resize(n);
   moment_.resize(n);
@@ -41,9 +42,8 @@ void VerletIntegrator::set_contact_velocities(Particles& p) const {
   }
 }
 
-const ExplicitResponse& VerletIntegrator::velocities(InertialModel& model, const HydroLoad& load, double rate,
-                                                     const hydro::WavyShear& flow, double last_dt, Particles& p,
-                                                     double& max_speed) {
+const ExplicitResponse& VerletIntegrator::velocities(const HydroLoad& load, double rate, const hydro::WavyShear& flow,
+                                                     double last_dt, Particles& p, double& max_speed) {
   const std::size_t n = p.size();
   const std::vector<double>& v = state_;
   // Hydrodynamic force and torque at the half-step velocities (explicit, paper 000 eq. 15c).
@@ -53,7 +53,7 @@ const ExplicitResponse& VerletIntegrator::velocities(InertialModel& model, const
       disturbance_[6 * i + k] = v[12 * i + k] - flow.velocity(p.position[i])[k];
       disturbance_[6 * i + 3 + k] = v[12 * i + 3 + k] - flow.angular_velocity(p.position[i])[k];
     }
-  const ExplicitResponse& hydro = model.explicit_forces(load, rate, disturbance_, mass_, moment_);
+  const ExplicitResponse& hydro = model_.explicit_forces(load, rate, disturbance_, mass_, moment_);
   relaxation_rate_ = hydro.relaxation_rate;
   acceleration_.resize(6 * n);
   max_speed = 0.0;
