@@ -2,62 +2,78 @@
 // (the protocol) and its spatial shape (simple shear, or the wavy shear of paper 000 eq. 17). Every hydrodynamic
 // model and the runner ask it for this step's rate or stress target; none hard-codes a protocol.
 //
-// Protocols (docs/flow.md):
-//   steady       rate control: gammadot = shear_rate;  stress control: Sigma_xy = shear_stress
-//   oscillatory  rate control: gamma(t) = gamma_0 sin(omega t), gammadot(t) = gamma_0 omega cos(omega t);
-//                stress control: Sigma_xy(t) = Sigma_0 sin(omega t)
-//   reversal     steady shear whose direction flips each time the accumulated strain passes one of reverse_at
-//                (the shear-reversal experiment, Gadala-Maria & Acrivos 1980; paper 004 section III E cites it)
+// A protocol is an object (FlowProtocol) that owns its targets, its step limit and the events steps must end on;
+// each is one file in io/protocols/ with its keys, its resolved-case entry and its summary block, registered by one
+// line in io/protocols/registry.cpp (docs/flow.md, docs/architecture.md). The base class is steady shear.
 // Strains: `strain` is the signed strain the Lees-Edwards cell follows; the accumulated strain is the integral of
-// |gammadot| dt. Steady runs count their length in signed strain (as they always have), the others in accumulated
-// strain (run.strain, outputs and averaging windows), so an oscillation of amplitude gamma_0 covers 4 gamma_0 per
-// cycle.
+// |gammadot| dt. Steady runs (and creep) count their length in signed strain, the others in accumulated strain
+// (run.strain, outputs and averaging windows), so an oscillation of amplitude gamma_0 covers 4 gamma_0 per cycle.
 // Units: rates in gammadot_ref, stresses in eta_0 gammadot_ref, time in 1/gammadot_ref.
 #pragma once
+#include <limits>
+#include <memory>
 #include <string>
-#include <vector>
 
 namespace suspend {
 
 enum class FlowControl { rate, stress };
-enum class FlowProtocol { steady, oscillatory, reversal };
+
+struct Flow;
+
+class FlowProtocol {
+ public:
+  static constexpr double never = std::numeric_limits<double>::infinity();
+  virtual ~FlowProtocol() = default;
+
+  // Its flow.type.
+  virtual std::string name() const { return "simple_shear"; }
+  // Throws InputError naming the flow.* key of an impossible setting.
+  virtual void validate(const Flow&) const {}
+  // The imposed shear rate (rate control) and the target Sigma_xy (stress control) at this time and accumulated
+  // strain; steady shear: the flow's shear_rate and shear_stress.
+  virtual double rate(const Flow& flow, double time, double accumulated_strain) const;
+  virtual double stress(const Flow& flow, double time, double accumulated_strain) const;
+  // The largest |rate| (rate control) or |stress| (stress control) it imposes at any time.
+  virtual double largest_target(const Flow& flow) const;
+  // Longest time step it allows (an oscillation: a fraction of the period).
+  virtual double max_time_step() const { return never; }
+  // The first accumulated strain after `accumulated_strain`, and the first time after `time`, that a step must
+  // end on (a reversal, a stress step); `never` when none.
+  virtual double next_event_strain(double) const { return never; }
+  virtual double next_event_time(double) const { return never; }
+  // Period of a periodic protocol (series rows evenly in time); 0 otherwise.
+  virtual double period() const { return 0.0; }
+  // Whether run.strain, the averaging window and the output intervals count the signed strain (steady, creep)
+  // rather than the accumulated strain.
+  virtual bool counts_signed_strain() const { return true; }
+};
+
+// The protocol of a Flow nobody set: steady shear.
+std::shared_ptr<const FlowProtocol> steady_shear();
 
 struct Flow {
   FlowControl control = FlowControl::rate;
-  FlowProtocol protocol = FlowProtocol::steady;
-  double shear_rate = 1.0;     // rate control: imposed (steady, reversal); stress control: the first step's guess
-  double shear_stress = 1.0;   // stress control: target Sigma_xy (steady, reversal)
+  std::shared_ptr<const FlowProtocol> protocol = steady_shear();
+  double shear_rate = 1.0;      // rate control: the protocol's level; stress control: the first step's guess
+  double shear_stress = 1.0;    // stress control: the protocol's level (target Sigma_xy of steady shear)
   double wave_amplitude = 0.0;  // wavy shear (paper 000 eq. 17): U (gammadot_ref a_1); 0: simple shear
   int wave_periods = 0;         // n, periods across L_y
-  double strain_amplitude = 0.0;   // oscillatory, rate control: gamma_0
-  double stress_amplitude = 0.0;   // oscillatory, stress control: Sigma_0
-  double angular_frequency = 0.0;  // oscillatory: omega (gammadot_ref)
-  int steps_per_cycle = 400;       // oscillatory: the time step is at most one cycle / steps_per_cycle
-  std::vector<double> reverse_at;  // reversal: accumulated strains, increasing
 
   void validate() const;  // throws InputError naming the flow.* key
 
-  bool steady() const { return protocol == FlowProtocol::steady; }
-  bool oscillatory() const { return protocol == FlowProtocol::oscillatory; }
-  // +1 before the first reversal, -1 after it, +1 after the second...
-  double direction(double accumulated_strain) const;
-  // The imposed shear rate (rate control) at this time and accumulated strain.
-  double rate(double time, double accumulated_strain) const;
-  // The target Sigma_xy (stress control) at this time and accumulated strain.
-  double stress(double time, double accumulated_strain) const;
-  // Longest time step the protocol allows (oscillation: a fraction of the period); infinite otherwise.
-  double max_time_step() const;
-  // Accumulated strain of the next reversal after `accumulated_strain` (infinite when none): steps end on it.
-  double next_reversal(double accumulated_strain) const;
-  // Period 2 pi / omega of the oscillation (0 for the other protocols).
-  double period() const;
+  std::string protocol_name() const { return protocol->name(); }
+  bool periodic() const { return protocol->period() > 0.0; }
+  bool counts_signed_strain() const { return protocol->counts_signed_strain(); }
+  double rate(double time, double accumulated_strain) const { return protocol->rate(*this, time, accumulated_strain); }
+  double stress(double time, double accumulated_strain) const {
+    return protocol->stress(*this, time, accumulated_strain);
+  }
+  double max_time_step() const { return protocol->max_time_step(); }
+  double next_event_strain(double accumulated_strain) const { return protocol->next_event_strain(accumulated_strain); }
+  double next_event_time(double time) const { return protocol->next_event_time(time); }
+  double period() const { return protocol->period(); }
   // The rate of a run's progress strain: signed for steady shear, |gammadot| for the other protocols.
-  double progress_rate(double shear_rate) const;
-
- private:
-  std::vector<double>::const_iterator first_reversal_ahead(double accumulated_strain) const;
+  double progress_rate(double rate) const;
 };
-
-std::string protocol_name(FlowProtocol p);
 
 }  // namespace suspend

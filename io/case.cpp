@@ -89,8 +89,7 @@ void refuse_runs_without_progress(const Case& c) {
   const Flow& fl = s.flow;
   const bool stress = fl.control == FlowControl::stress;
   // The largest rate the protocol imposes (an oscillation's amplitude).
-  const double rate = stress ? std::abs(fl.oscillatory() ? fl.stress_amplitude : fl.shear_stress)
-                             : std::abs(fl.oscillatory() ? fl.strain_amplitude * fl.angular_frequency : fl.shear_rate);
+  const double rate = fl.protocol->largest_target(fl);
   const std::string rate_key = stress ? "flow.shear_stress (or sigma_star)" : "flow.shear_rate";
   double step = 0.0;  // largest strain per step
   std::string why;
@@ -158,48 +157,11 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   {
     SchemaReader f = top.child("flow");
     SimulationParams& s = c.simulation;
-    c.flow = f.choice("type", "simple_shear", {"simple_shear", "wavy", "oscillatory", "reversal"});
-    Flow& fl = s.flow;
-    fl.protocol = c.flow == "oscillatory" ? FlowProtocol::oscillatory
-                  : c.flow == "reversal"  ? FlowProtocol::reversal
-                                          : FlowProtocol::steady;
-    fl.control = f.choice("control", "rate", {"rate", "stress"}) == "stress" ? FlowControl::stress : FlowControl::rate;
-    const bool oscillatory = fl.oscillatory();
-    if (oscillatory && fl.control == FlowControl::rate && f.has("shear_rate"))
-      f.fail("shear_rate", "an oscillation's rate is strain_amplitude x angular_frequency x cos(omega t); give those "
-                           "and remove shear_rate (--set flow.shear_rate=null)");
-    fl.shear_rate = f.number("shear_rate", 1.0, Range::positive());
-    if (oscillatory) {
-      fl.angular_frequency = f.number("angular_frequency", Range::positive());
-      fl.steps_per_cycle = static_cast<int>(f.integer("steps_per_cycle", fl.steps_per_cycle, 8, 1'000'000'000));
-    }
-    if (fl.control == FlowControl::stress) {
-      if (oscillatory) {
-        for (const char* key : {"shear_stress", "sigma_star", "strain_amplitude"})
-          if (f.has(key))
-            f.fail(key, "an oscillation under stress control is Sigma_xy = stress_amplitude sin(omega t); give "
-                        "stress_amplitude");
-        fl.stress_amplitude = f.number("stress_amplitude", Range::positive());
-      } else {
-        if (f.has("sigma_star") && f.has("shear_stress"))
-          f.fail("sigma_star", "give either shear_stress or sigma_star (adhesive laws), not both");
-        if (f.has("sigma_star"))
-          sigma_star = f.number("sigma_star", Range::positive());
-        else
-          fl.shear_stress = f.number("shear_stress", Range::positive());
-      }
-      if (c.flow == "wavy") f.fail("control", "stress control is available for flow.type = simple_shear only");
-    } else {
-      for (const char* key : {"shear_stress", "sigma_star", "stress_amplitude"})
-        if (f.has(key))
-          f.fail(key, "is a target of flow.control = stress; with control = rate give shear_rate only");
-      if (oscillatory) fl.strain_amplitude = f.number("strain_amplitude", Range::positive());
-    }
-    if (c.flow == "wavy") {
-      fl.wave_amplitude = f.number("amplitude", Range{});
-      fl.wave_periods = static_cast<int>(f.integer("periods", 1, 1, 1'000'000));
-    }
-    if (c.flow == "reversal") fl.reverse_at = f.number_list("reverse_at", Range::positive());  // Flow::validate
+    c.flow = f.choice("type", "simple_shear", protocol_types());
+    ProtocolKeys keys{f, s.flow, sigma_star};
+    c.protocol = read_protocol(c.flow, keys);
+    s.flow.protocol = c.protocol;
+    s.flow.validate();
     f.finish();
   }
   {
@@ -306,14 +268,14 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     ts.displacement_per_compliance =
         t.number("displacement_per_compliance", ts.displacement_per_compliance, Range::positive());
     // An oscillation stops the flow twice a cycle: floor the compliance bound there (time_step_control.hpp).
-    ts.min_displacement = t.number("min_displacement", c.simulation.flow.oscillatory() ? 0.01 * ts.max_displacement : 0.0,
+    ts.min_displacement = t.number("min_displacement", c.simulation.flow.periodic() ? 0.01 * ts.max_displacement : 0.0,
                                    Range::non_negative());
     t.finish();
 
     SchemaReader o = r.child("output");
     OutputCase& out = c.run.output;
     out.series_every = o.number("series_every", out.series_every, Range::positive());
-    if (c.simulation.flow.oscillatory())
+    if (c.simulation.flow.periodic())
       out.series_per_cycle = static_cast<int>(o.integer("series_per_cycle", out.series_per_cycle, 8, 1'000'000));
     else if (o.has("series_per_cycle"))
       o.fail("series_per_cycle", "applies to flow.type = oscillatory only (the others write every series_every)");
@@ -368,25 +330,8 @@ YAML::Node to_yaml(const Case& c) {
   const Flow& fl = c.simulation.flow;
   n["flow"]["type"] = c.flow;
   n["flow"]["control"] = fl.control == FlowControl::stress ? "stress" : "rate";
-  if (!(fl.oscillatory() && fl.control == FlowControl::rate)) n["flow"]["shear_rate"] = number_node(fl.shear_rate);
-  if (fl.control == FlowControl::stress && !fl.oscillatory()) n["flow"]["shear_stress"] = number_node(fl.shear_stress);
-  if (c.flow == "wavy") {
-    n["flow"]["amplitude"] = number_node(fl.wave_amplitude);
-    n["flow"]["periods"] = fl.wave_periods;
-  }
-  if (fl.oscillatory()) {
-    if (fl.control == FlowControl::stress)
-      n["flow"]["stress_amplitude"] = number_node(fl.stress_amplitude);
-    else
-      n["flow"]["strain_amplitude"] = number_node(fl.strain_amplitude);
-    n["flow"]["angular_frequency"] = number_node(fl.angular_frequency);
-    n["flow"]["steps_per_cycle"] = fl.steps_per_cycle;
-  }
-  if (c.flow == "reversal") {
-    YAML::Node at(YAML::NodeType::Sequence);
-    for (double x : fl.reverse_at) at.push_back(number_node(x));
-    n["flow"]["reverse_at"] = at;
-  }
+  YAML::Node flow_keys = n["flow"];
+  c.protocol->write(fl, flow_keys);
   n["hydrodynamics"]["model"] = c.hydrodynamics;
   if (c.hydrodynamics == "fcm") {
     YAML::Node m = n["hydrodynamics"]["fcm"];
@@ -445,7 +390,7 @@ YAML::Node to_yaml(const Case& c) {
   r["time_step"]["gap_change"] = number_node(ts.gap_change);
   if (ts.min_displacement > 0.0) r["time_step"]["min_displacement"] = number_node(ts.min_displacement);
   r["output"]["series_every"] = number_node(c.run.output.series_every);
-  if (c.simulation.flow.oscillatory()) r["output"]["series_per_cycle"] = c.run.output.series_per_cycle;
+  if (c.simulation.flow.periodic()) r["output"]["series_per_cycle"] = c.run.output.series_per_cycle;
   r["output"]["snapshot_every"] = number_node(c.run.output.snapshot_every);
   r["output"]["checkpoint_every"] = number_node(c.run.output.checkpoint_every);
   r["output"]["checkpoint_seconds"] = number_node(c.run.output.checkpoint_seconds);

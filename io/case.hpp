@@ -12,6 +12,7 @@
 #include "dem/packing.hpp"
 #include "coupling/fcm_model.hpp"
 #include "dem/simulation.hpp"
+#include "io/protocols/protocol.hpp"
 
 namespace suspend::io {
 
@@ -51,7 +52,9 @@ struct Case {
   std::vector<std::string> overrides;  // the --set assignments applied to it (to print a restart command)
   ParticlesCase particles;
   std::optional<Vec3> box;  // given box, else derived from count and phi
-  std::string flow = "simple_shear";
+  std::string flow = "simple_shear";  // flow.type
+  // The flow's protocol with its input/output side (the same object as simulation.flow.protocol).
+  std::shared_ptr<const Protocol> protocol = simple_shear_protocol();
   std::string hydrodynamics = "pairwise";  // "pairwise" or "fcm"
   SimulationParams simulation;
   FcmParams fcm;  // hydrodynamics.fcm (model fcm only)

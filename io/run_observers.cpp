@@ -18,13 +18,13 @@ std::atomic<int> stop_signal{0};
 extern "C" void on_stop_signal(int sig) { stop_signal.store(sig); }
 
 // Imposed steady (or reversing) stress: a flow that stops is a jammed point, its mean rate below this one.
-bool detects_jamming(const Flow& flow) { return flow.control == FlowControl::stress && !flow.oscillatory(); }
+bool detects_jamming(const Flow& flow) { return flow.control == FlowControl::stress && !flow.periodic(); }
 double jamming_rate(const Case& c) { return c.simulation.flow.shear_stress / c.run.jammed_viscosity; }
 
 // Series rows: every series_every of strain, or series_per_cycle per period of an oscillation (in time).
 double series_interval(const Case& c) {
   const Flow& flow = c.simulation.flow;
-  return flow.oscillatory() ? flow.period() / c.run.output.series_per_cycle : c.run.output.series_every;
+  return flow.periodic() ? flow.period() / c.run.output.series_per_cycle : c.run.output.series_every;
 }
 }  // namespace
 
@@ -61,7 +61,7 @@ int end_jammed(RunContext& r, double rate, double over_time) {
 }
 
 SeriesWriter::SeriesWriter(RunContext& r)
-    : by_time_(r.c.simulation.flow.oscillatory()),
+    : by_time_(r.c.simulation.flow.periodic()),
       trigger_(r.clock.next_series, series_interval(r.c), strain_tolerance * (by_time_ ? series_interval(r.c) : 1.0)) {}
 
 void SeriesWriter::evaluated(RunContext& r) {
@@ -146,6 +146,12 @@ std::optional<int> JammingDetector::advanced(RunContext& r) {
   const Flow& flow = r.c.simulation.flow;
   const double window = r.c.run.jammed_strain * r.c.run.jammed_viscosity / flow.shear_stress;
   const SimulationState& st = r.sim.state();
+  // A window never spans a step of the protocol's target (creep from a level): it starts again after one.
+  if (flow.next_event_time(r.clock.jam_window_time) <= st.time) {
+    r.clock.jam_window_time = st.time;
+    r.clock.jam_window_strain = r.strain();
+    return std::nullopt;
+  }
   if (st.time - r.clock.jam_window_time < window) return std::nullopt;
   if (r.strain() - r.clock.jam_window_strain < r.c.run.jammed_strain)
     return end_jammed(r, (r.strain() - r.clock.jam_window_strain) / (st.time - r.clock.jam_window_time),

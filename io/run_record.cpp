@@ -13,7 +13,7 @@
 namespace suspend::io {
 
 double progress_strain(const Flow& flow, const SimulationState& st) {
-  return flow.steady() ? st.strain : st.accumulated_strain;
+  return flow.counts_signed_strain() ? st.strain : st.accumulated_strain;
 }
 
 Snapshot snapshot_of(const Simulation& sim) {
@@ -107,7 +107,7 @@ nlohmann::json RunRecord::write_summary(double average_from, const nlohmann::jso
   nlohmann::json summary =
       summarize(file_.id(), {sim_.state().particles.volume() / sim_.box().volume(), sim_.state().particles.size(),
                              average_from, flow.control == FlowControl::stress,
-                             adhesion_force(case_.simulation.contact), flow});
+                             adhesion_force(case_.simulation.contact), flow, case_.protocol.get()});
   summary.update(extra);
   // What produced it: the resolved case, the program and this invocation's wall time and threads.
   summary["case"] = yaml_to_json(to_yaml(case_));

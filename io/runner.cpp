@@ -40,7 +40,7 @@ void check_finite(const SimulationState& st) {
 }
 
 // The last step ends on run.strain, not past it (returns true when it was shortened: that step is for the output
-// only, see RunRecord::save_final); a reversal step ends on its strain.
+// only, see RunRecord::save_final); a step ends on the protocol's events (a reversal's strain, a stress step's time).
 bool clip_step(Simulation& sim, const Flow& flow, double strain, double end) {
   bool clipped = false;
   const double pace = flow.progress_rate(sim.shear_rate());
@@ -48,9 +48,11 @@ bool clip_step(Simulation& sim, const Flow& flow, double strain, double end) {
     sim.clip_time_step(left / pace);
     clipped = true;
   }
-  if (const double left = flow.next_reversal(sim.state().accumulated_strain) - sim.state().accumulated_strain;
+  if (const double left = flow.next_event_strain(sim.state().accumulated_strain) - sim.state().accumulated_strain;
       std::abs(sim.shear_rate()) * sim.time_step() > left)
     sim.clip_time_step(left / std::abs(sim.shear_rate()));
+  if (const double left = flow.next_event_time(sim.state().time) - sim.state().time; sim.time_step() > left)
+    sim.clip_time_step(left);
   return clipped;
 }
 

@@ -10,20 +10,16 @@
 #include "core/error.hpp"
 #include "core/stress.hpp"
 #include "io/run_file.hpp"
-#include "io/oscillatory_response.hpp"
 #include "io/snapshot_reader.hpp"
 #include "io/statistics.hpp"
 
 namespace suspend::io {
 
-namespace {
-nlohmann::json entry(const MeanWithError& m) { return {{"mean", m.mean}, {"sem", m.sem}}; }
+nlohmann::json summary_entry(const MeanWithError& m) { return {{"mean", m.mean}, {"sem", m.sem}}; }
 
-// eta_r, N1, N2, Pi of one stress series (columns xx yy zz xy xz yz). Under an imposed rate each row is divided by
-// its own shear rate; under an imposed stress the window means are divided by the mean rate, and the rate's
-// standard error is propagated (first order, independent errors).
-nlohmann::json observables(hid_t f, const std::string& series, const std::vector<double>& rate,
-                           const std::vector<std::size_t>& window, const MeanWithError* mean_rate) {
+// The rate's standard error is propagated to first order (independent errors).
+nlohmann::json stress_observables(hid_t f, const std::string& series, const std::vector<double>& rate,
+                                  const std::vector<std::size_t>& window, const MeanWithError* mean_rate) {
   std::vector<std::vector<double>> c(6);
   for (int k = 0; k < 6; ++k) c[k] = read_series(f, series, k);
   std::vector<double> eta, n1, n2, pi;
@@ -40,10 +36,13 @@ nlohmann::json observables(hid_t f, const std::string& series, const std::vector
       const double g = mean_rate->mean, sg = mean_rate->sem;
       m = {m.mean / g, std::hypot(m.sem / g, m.mean * sg / (g * g))};
     }
-    return entry(m);
+    return summary_entry(m);
   };
   return {{"eta_r", scaled(eta)}, {"N1", scaled(n1)}, {"N2", scaled(n2)}, {"Pi", scaled(pi)}};
 }
+
+namespace {
+nlohmann::json entry(const MeanWithError& m) { return summary_entry(m); }
 // Window averages over the snapshots (analysis/; docs/output.md "Microstructure"): the contact network is not in the
 // series, so these are means over the snapshots with strain >= from.
 nlohmann::json microstructure(hid_t f, double from, const char* strain_attribute) {
@@ -80,80 +79,11 @@ nlohmann::json microstructure(hid_t f, double from, const char* strain_attribute
   return j;
 }
 
-nlohmann::json optional_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
-
-// eta', eta'' of the total stress and of each contribution, the amplitudes and the response's harmonics.
-// t, rate: the series' time and shear_rate columns.
-nlohmann::json oscillation(hid_t f, const SummaryContext& ctx, const std::vector<double>& t,
-                           const std::vector<double>& rate, double from_time, double* rate_amplitude) {
-  const double omega = ctx.flow.angular_frequency;
-  const bool stress_control = ctx.flow.control == FlowControl::stress;
-  auto of = [&](const std::string& series) {
-    return oscillatory_response(t, read_series(f, series, 3), rate, omega, from_time, stress_control);
-  };
-  const OscillatoryResponse total = of("stress/total");
-  *rate_amplitude = total.strain_amplitude * omega;
-  nlohmann::json j;
-  j["angular_frequency"] = omega;
-  j["period"] = ctx.flow.period();
-  j["cycles"] = total.cycles;
-  j["from_time"] = from_time;
-  auto both = [](const OscillatoryResponse& r) {
-    return nlohmann::json{
-        {"eta_prime", {{"mean", optional_number(r.eta_prime.mean)}, {"sem", optional_number(r.eta_prime.sem)}}},
-        {"eta_double_prime",
-         {{"mean", optional_number(r.eta_double_prime.mean)}, {"sem", optional_number(r.eta_double_prime.sem)}}}};
-  };
-  j.update(both(total));
-  j["G_prime"] = optional_number(omega * total.eta_double_prime.mean);
-  j["G_double_prime"] = optional_number(omega * total.eta_prime.mean);
-  j["strain_amplitude"] = optional_number(total.strain_amplitude);
-  j["stress_amplitude"] = optional_number(total.stress_amplitude);
-  j["harmonics"] = {{"response", stress_control ? "shear_rate" : "shear_stress"},
-                    {"I3_I1", optional_number(total.harmonics[0])},
-                    {"I5_I1", optional_number(total.harmonics[1])},
-                    {"I7_I1", optional_number(total.harmonics[2])}};
-  for (auto name : contribution_names)
-    j["contributions"][std::string(name)] = both(of("stress/" + std::string(name)));
-  return j;
-}
-
-// Each reversal's transient: the viscosity Sigma_xy / gammadot over the last strain unit before it, its minimum
-// after it and where, and its mean over the last strain unit before the next reversal or the end.
-// strain, rate: the series' accumulated_strain and shear_rate columns.
-nlohmann::json reversals(hid_t f, const SummaryContext& ctx, const std::vector<double>& strain,
-                         const std::vector<double>& rate) {
-  const std::vector<double> sxy = read_series(f, "stress/total", 3);
-  nlohmann::json out = nlohmann::json::array();
-  const std::vector<double>& at = ctx.flow.reverse_at;
-  const double end = strain.empty() ? 0.0 : strain.back();
-  for (std::size_t k = 0; k < at.size() && at[k] < end; ++k) {
-    const double next = k + 1 < at.size() ? std::min(at[k + 1], end) : end;
-    std::vector<double> before, after;
-    double eta_min = std::numeric_limits<double>::infinity(), strain_of_min = 0.0;
-    for (std::size_t r = 0; r < strain.size(); ++r) {
-      const double eta = sxy[r] / rate[r];
-      if (strain[r] >= at[k] - 1.0 && strain[r] < at[k] * (1.0 - 1e-12)) before.push_back(eta);
-      if (strain[r] > at[k] * (1.0 + 1e-12) && strain[r] <= next) {
-        if (eta < eta_min) eta_min = eta, strain_of_min = strain[r] - at[k];
-        if (strain[r] >= next - 1.0) after.push_back(eta);
-      }
-    }
-    out.push_back({{"at_strain", at[k]},
-                   {"eta_before", before.empty() ? nlohmann::json() : entry(block_average(before, 4))},
-                   {"eta_min", std::isfinite(eta_min) ? nlohmann::json(eta_min) : nlohmann::json()},
-                   {"strain_of_min", strain_of_min},
-                   {"eta_after", after.empty() ? nlohmann::json() : entry(block_average(after, 4))},
-                   {"after_to_strain", next}});
-  }
-  return out;
-}
-
 }  // namespace
 
 nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
-  const bool steady = ctx.flow.steady();
-  const std::vector<double> strain = read_series(f, steady ? "strain" : "accumulated_strain");
+  const bool signed_strain = ctx.flow.counts_signed_strain();
+  const std::vector<double> strain = read_series(f, signed_strain ? "strain" : "accumulated_strain");
   const std::vector<double> rate = read_series(f, "shear_rate");
   std::vector<std::size_t> window;
   for (std::size_t r = 0; r < strain.size(); ++r)
@@ -163,18 +93,7 @@ nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
   for (std::size_t r : window) window_rate.push_back(rate[r]);
   MeanWithError mean_rate = block_average(window_rate);
   const MeanWithError* by_mean = ctx.stress_control ? &mean_rate : nullptr;
-  nlohmann::json oscillatory;
-  MeanWithError rate_amplitude;
-  if (ctx.flow.oscillatory()) {
-    const std::vector<double> t = read_series(f, "time");
-    const double from_time = window.empty() ? (t.empty() ? 0.0 : t.back()) : t[window.front()];
-    oscillatory = oscillation(f, ctx, t, rate, from_time, &rate_amplitude.mean);
-    by_mean = &rate_amplitude;  // N1, N2, Pi over the rate amplitude; eta_r below is eta'
-  }
-  j["note"] = ctx.flow.oscillatory()
-                  ? "oscillatory shear: eta_r is eta' (io/oscillatory_response.hpp); N1, N2, Pi are window means "
-                    "divided by eta_0 times the shear-rate amplitude"
-              : ctx.stress_control
+  j["note"] = ctx.stress_control
                   ? "imposed shear stress: stresses are divided by eta_0 times the mean shear rate of the window"
                   : "normal stresses and pressure are divided by eta_0 times the shear rate of each sample";
   j["shear_rate"] = entry(mean_rate);
@@ -182,17 +101,11 @@ nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
   j["particles"] = ctx.particles;
   j["window"] = {{"from_strain", ctx.average_from}, {"to_strain", strain.empty() ? 0.0 : strain.back()}};
   j["samples"] = window.size();
-  const nlohmann::json total = observables(f, "stress/total", rate, window, by_mean);
+  const nlohmann::json total = stress_observables(f, "stress/total", rate, window, by_mean);
   for (const auto& [k, v] : total.items()) j[k] = v;
   for (auto name : contribution_names)
-    j["contributions"][std::string(name)] = observables(f, "stress/" + std::string(name), rate, window, by_mean);
-  if (ctx.flow.oscillatory()) {
-    j["eta_r"] = oscillatory["eta_prime"];
-    for (auto name : contribution_names)
-      j["contributions"][std::string(name)]["eta_r"] = oscillatory["contributions"][std::string(name)]["eta_prime"];
-    j["oscillatory"] = oscillatory;
-  }
-  if (ctx.flow.protocol == FlowProtocol::reversal) j["reversals"] = reversals(f, ctx, strain, rate);
+    j["contributions"][std::string(name)] = stress_observables(f, "stress/" + std::string(name), rate, window, by_mean);
+  if (ctx.protocol) ctx.protocol->summarise({f, ctx, strain, rate, window}, j);
   std::vector<double> contacts = read_series(f, "contacts"), overlap = read_series(f, "max_overlap");
   std::vector<double> wc, wo;
   for (std::size_t r : window) wc.push_back(contacts[r]), wo.push_back(overlap[r]);
@@ -202,7 +115,7 @@ nlohmann::json summarize(hid_t f, const SummaryContext& ctx) {
   // Z, the mean number of contacts of a particle: every contact (pair) touches two particles.
   j["contacts_per_particle"] = entry({2.0 * z.mean / n, 2.0 * z.sem / n});
   j["max_overlap"] = entry(block_average(wo));
-  j["microstructure"] = microstructure(f, ctx.average_from, steady ? "strain" : "accumulated_strain");
+  j["microstructure"] = microstructure(f, ctx.average_from, signed_strain ? "strain" : "accumulated_strain");
   if (ctx.adhesion_force > 0.0) {
     // Paper 004: sigma* = 6 pi Sigma_xy a_1^2 / F_adh, G_adh = F_adh / (6 pi eta_0 a_1^2 gammadot).
     const std::vector<double> sxy = read_series(f, "stress/total", 3);

@@ -6,6 +6,8 @@
 
 #include "core/flow.hpp"
 #include "io/hdf5.hpp"
+#include "io/protocols/protocol.hpp"
+#include "io/statistics.hpp"
 
 namespace suspend::io {
 
@@ -17,12 +19,19 @@ struct SummaryContext {
   bool stress_control = false;
   // F_adh of adhesive contacts (0: none); adds sigma* = 6 pi Sigma_xy a_1^2 / F_adh and G_adh.
   double adhesion_force = 0.0;
-  // The imposed flow: steady windows count the signed strain, the other protocols the accumulated strain; an
-  // oscillation adds `oscillatory` (eta', eta'', harmonics; io/oscillatory_response.hpp) and reports eta_r = eta',
-  // N1, N2, Pi divided by the rate amplitude; a reversal adds `reversals` (the transient after each).
+  // The imposed flow: steady windows count the signed strain, the other protocols the accumulated strain.
   Flow flow;
+  // Its protocol's block (an oscillation's eta', a reversal's transients, a creep's compliance; io/protocols/).
+  const Protocol* protocol = nullptr;
 };
 
 nlohmann::json summarize(hid_t run_file, const SummaryContext& context);
+
+// {"mean", "sem"} of a window mean.
+nlohmann::json summary_entry(const MeanWithError& m);
+// eta_r, N1, N2, Pi of one stress series (columns xx yy zz xy xz yz) over the window rows. mean_rate null: each row
+// divided by its own shear rate (imposed rate); else the window means divided by *mean_rate, its error propagated.
+nlohmann::json stress_observables(hid_t f, const std::string& series, const std::vector<double>& rate,
+                                  const std::vector<std::size_t>& window, const MeanWithError* mean_rate);
 
 }  // namespace suspend::io

@@ -1,4 +1,4 @@
-// The flow protocols as a value (core/flow.hpp) and the harmonic analysis of an oscillation
+// The flow protocols as values (core/flow.hpp, read by io/protocols/) and the harmonic analysis of an oscillation
 // (io/oscillatory_response.hpp), against closed forms.
 #include <gtest/gtest.h>
 
@@ -8,74 +8,84 @@
 #include "core/error.hpp"
 #include "core/flow.hpp"
 #include "io/oscillatory_response.hpp"
+#include "io/protocols/protocol.hpp"
 
 using namespace suspend;
 using std::numbers::pi;
 
+namespace {
+// A flow mapping read as a case reads it (io/protocols/).
+Flow read_flow(const std::string& yaml) {
+  io::SchemaReader f(YAML::Load(yaml), "flow");
+  Flow flow;
+  std::optional<double> sigma_star;
+  io::ProtocolKeys keys{f, flow, sigma_star};
+  const std::string type = f.text("type", "simple_shear");
+  flow.protocol = io::read_protocol(type, keys);
+  f.finish();
+  flow.validate();
+  return flow;
+}
+
+std::string refusal(const std::string& yaml) {
+  try {
+    read_flow(yaml);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
 TEST(FlowProtocol, OscillationImposesGammaZeroSinOmegaT) {
-  Flow f;
-  f.protocol = FlowProtocol::oscillatory;
-  f.strain_amplitude = 0.3;
-  f.angular_frequency = 2.0;
-  f.validate();
+  const Flow f = read_flow("{type: oscillatory, strain_amplitude: 0.3, angular_frequency: 2}");
   // gamma = 0.3 sin(2 t): gammadot = 0.6 cos(2 t), whatever the accumulated strain.
   for (double t : {0.0, 0.4, 1.3, 7.7}) EXPECT_DOUBLE_EQ(f.rate(t, 123.0), 0.6 * std::cos(2.0 * t));
   EXPECT_DOUBLE_EQ(f.period(), pi);
+  EXPECT_TRUE(f.periodic());
   EXPECT_DOUBLE_EQ(f.max_time_step(), pi / 400.0);
-  EXPECT_EQ(f.next_reversal(1.0), INFINITY);
+  EXPECT_EQ(f.next_event_strain(1.0), INFINITY);
+  EXPECT_EQ(f.next_event_time(1.0), INFINITY);
   EXPECT_DOUBLE_EQ(f.progress_rate(-0.5), 0.5);  // an oscillation counts accumulated strain
-  f.control = FlowControl::stress;
-  f.stress_amplitude = 4.0;
-  EXPECT_DOUBLE_EQ(f.stress(0.3, 0.0), 4.0 * std::sin(0.6));
+  const Flow s = read_flow("{type: oscillatory, control: stress, stress_amplitude: 4, angular_frequency: 2}");
+  EXPECT_DOUBLE_EQ(s.stress(0.3, 0.0), 4.0 * std::sin(0.6));
+  EXPECT_DOUBLE_EQ(s.protocol->largest_target(s), 4.0);
 }
 
 TEST(FlowProtocol, ReversalFlipsTheDirectionAtEachGivenAccumulatedStrain) {
-  Flow f;
-  f.protocol = FlowProtocol::reversal;
-  f.shear_rate = 2.0;
-  f.shear_stress = 5.0;
-  f.reverse_at = {3.0, 5.0};
-  f.validate();
+  const Flow f = read_flow("{type: reversal, shear_rate: 2, reverse_at: [3, 5]}");
   EXPECT_DOUBLE_EQ(f.rate(0.0, 0.0), 2.0);
   EXPECT_DOUBLE_EQ(f.rate(9.0, 2.999), 2.0);
   EXPECT_DOUBLE_EQ(f.rate(9.0, 3.0), -2.0);  // a step ends exactly on the reversal: the new direction holds
-  EXPECT_DOUBLE_EQ(f.stress(9.0, 4.0), -5.0);
   EXPECT_DOUBLE_EQ(f.rate(9.0, 5.5), 2.0);
-  EXPECT_DOUBLE_EQ(f.next_reversal(0.0), 3.0);
-  EXPECT_DOUBLE_EQ(f.next_reversal(3.0), 5.0);
-  EXPECT_EQ(f.next_reversal(5.0), INFINITY);
+  EXPECT_DOUBLE_EQ(f.next_event_strain(0.0), 3.0);
+  EXPECT_DOUBLE_EQ(f.next_event_strain(3.0), 5.0);
+  EXPECT_EQ(f.next_event_strain(5.0), INFINITY);
   EXPECT_EQ(f.max_time_step(), INFINITY);
+  EXPECT_FALSE(f.counts_signed_strain());
+  const Flow s = read_flow("{type: reversal, control: stress, shear_stress: 5, reverse_at: 3}");
+  EXPECT_DOUBLE_EQ(s.stress(9.0, 4.0), -5.0);
 }
 
 TEST(FlowProtocol, SteadyShearIsUnchangedAndCountsSignedStrain) {
-  Flow f;
+  Flow f;  // nobody set a protocol: steady shear
   f.shear_rate = 1.5;
   EXPECT_DOUBLE_EQ(f.rate(10.0, 99.0), 1.5);
   EXPECT_DOUBLE_EQ(f.progress_rate(-0.5), -0.5);
   EXPECT_EQ(f.max_time_step(), INFINITY);
+  EXPECT_FALSE(f.periodic());
+  EXPECT_EQ(read_flow("{shear_rate: 1.5}").protocol_name(), "simple_shear");
 }
 
 TEST(FlowProtocol, ImpossibleSettingsNameTheirKey) {
-  auto message = [](const Flow& f) {
-    try {
-      f.validate();
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
-  Flow o;
-  o.protocol = FlowProtocol::oscillatory;
-  o.strain_amplitude = 0.1;
-  EXPECT_NE(message(o).find("flow.angular_frequency"), std::string::npos);
-  o.angular_frequency = 1.0;
-  o.strain_amplitude = 0.0;
-  EXPECT_NE(message(o).find("flow.strain_amplitude"), std::string::npos);
-  Flow r;
-  r.protocol = FlowProtocol::reversal;
-  EXPECT_NE(message(r).find("flow.reverse_at"), std::string::npos);
-  r.reverse_at = {2.0, 1.0};
-  EXPECT_NE(message(r).find("increasing"), std::string::npos);
+  EXPECT_NE(refusal("{type: oscillatory, strain_amplitude: 0.1}").find("flow.angular_frequency"), std::string::npos);
+  EXPECT_NE(refusal("{type: oscillatory, angular_frequency: 1, strain_amplitude: 0}").find("flow.strain_amplitude"),
+            std::string::npos);
+  EXPECT_NE(refusal("{type: reversal}").find("flow.reverse_at"), std::string::npos);
+  EXPECT_NE(refusal("{type: reversal, reverse_at: [2, 1]}").find("increasing"), std::string::npos);
+  EXPECT_NE(refusal("{type: shear_ramp}").find("flow.type"), std::string::npos);
+  EXPECT_NE(refusal("{type: wavy, control: stress, shear_stress: 1, amplitude: 1}").find("flow.control"),
+            std::string::npos);
 }
 
 TEST(OscillatoryResponse, RecoversModuliAndThirdHarmonicOfAKnownSignal) {
