@@ -5,7 +5,7 @@
 namespace suspend::io {
 
 namespace protocols_read {
-ProtocolRead simple_shear, wavy, oscillatory, reversal;
+ProtocolRead simple_shear, wavy, oscillatory, reversal, creep;
 }
 
 const std::vector<ProtocolEntry>& protocols() {
@@ -14,6 +14,7 @@ const std::vector<ProtocolEntry>& protocols() {
       {"wavy", protocols_read::wavy},
       {"oscillatory", protocols_read::oscillatory},
       {"reversal", protocols_read::reversal},
+      {"creep", protocols_read::creep},
   };
   return all;
 }
