@@ -21,11 +21,13 @@ copy_table() {
 for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise_boundary" \
     "pairwise_boundary_low_friction|pairwise_boundary_low_friction" \
     "pairwise_boundary_low_friction_low_stress|pairwise_boundary_low_friction_low_stress" \
-    "pairwise_boundary_exact|pairwise_boundary_exact" "fcm_seed_scatter|fcm_seed_scatter"; do
+    "pairwise_boundary_exact|pairwise_boundary_exact" "fcm_seed_scatter|fcm_seed_scatter" \
+    "pairwise_yield_stress|pairwise_yield_stress"; do
   IFS='|' read -r name method <<< "$entry"
   out="$root/results/phim/$method"
   [ -f "$runs/$name/campaign.json" ] && copy_table "$runs/$name" "$out"
   [ -f "$out/campaign.json" ] || continue
+  [ "$method" = pairwise_yield_stress ] && continue  # a search in sigma* at fixed phi: the table is the record
   if [ "$method" = fcm_seed_scatter ]; then  # a seed study, not a phi_m campaign
     /usr/bin/python3 "$root/tools/seed_scatter.py" "$out" > "$out/seed_scatter.txt"
     cat "$out/seed_scatter.txt"
