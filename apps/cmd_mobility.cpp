@@ -75,7 +75,7 @@ void run_mobility(const MobilityArgs& args) {
   const std::vector<Vec3> forces(pos.size(), f), torques(pos.size(), t);
   fcm::Solver solver(Vec3::Constant(args.box), {args.grid, args.grid, args.grid}, fcm::SolverOptions{});
   fcm::MobilityProblem pb{.positions = pos, .radii = rad, .forces = forces, .torques = torques,
-                          .shear_rate = args.shear_rate, .shear_offset = args.shear_offset};
+                          .flow = AmbientFlow::simple_shear(args.shear_rate), .shear_offset = args.shear_offset};
   const fcm::MobilityResult r = solver.solve(pb);
   const bool single = pos.size() == 1 && f.squaredNorm() > 0.0;
   const double drag = single ? 6.0 * std::numbers::pi * rad[0] * r.velocities[0].dot(f) / f.squaredNorm() : 0.0;

@@ -100,7 +100,7 @@ static void BM_FcmMobilitySolve(benchmark::State& state) {
   options.preconditioner = state.range(3) == 0 ? RigidityPreconditioner::jacobi : RigidityPreconditioner::near_field;
   options.near_field_reuse_displacement = 0.0;  // every repetition pays the factorisation, as a new configuration
   Solver solver(Vec3::Constant(l), {n, n, n}, options);
-  MobilityProblem pb{s.pos, s.rad, s.force, s.torque, 1.0, 1.3, zero};
+  MobilityProblem pb{s.pos, s.rad, s.force, s.torque, AmbientFlow::simple_shear(1.0), 1.3, zero};
   int iterations = 0, solves = 0;
   for (auto _ : state) {
     MobilityResult r = solver.solve(pb);

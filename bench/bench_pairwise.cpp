@@ -201,8 +201,8 @@ void BM_LubricationAssembly(benchmark::State& state) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   ResistanceSolver solver(c.species_radius, {});
   SolveResult out;
-  solver.solve(c.p, c.active, hydro::SimpleShear(1.0), c.force, c.torque, out);
-  for (auto _ : state) solver.solve(c.p, c.active, hydro::SimpleShear(1.0), c.force, c.torque, out);
+  solver.solve(c.p, c.active, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
+  for (auto _ : state) solver.solve(c.p, c.active, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
   omp_set_num_threads(omp_get_num_procs());
   state.counters["lub_pairs"] = static_cast<double>(out.lubricated_pairs);
   state.counters["iterations"] = out.iterations;
@@ -221,7 +221,7 @@ void BM_ExplicitHydrodynamics(benchmark::State& state) {
     mass[i] = 1e-3 * (4.0 / 3.0) * 3.141592653589793 * std::pow(c.p.radius[i], 3);
     moment[i] = 0.4 * mass[i] * c.p.radius[i] * c.p.radius[i];
   }
-  const hydro::SimpleShear flow(1.0);
+  const AmbientFlow flow = AmbientFlow::simple_shear(1.0);
   ResistanceSolver assembled(c.species_radius, {});
   ExplicitHydrodynamics matrix_free(c.species_radius, hydro::LubricationParams{});
   Eigen::VectorXd force;

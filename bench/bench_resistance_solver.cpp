@@ -65,7 +65,7 @@ const Configuration& configuration(std::size_t n) {
   // Advance one step with the solved velocities; same pair list, new geometry.
   ResistanceSolver solver(c.species_radius, {});
   SolveResult out;
-  solver.solve(p, c.previous.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+  solver.solve(p, c.previous.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
   c.current = c.previous;
   const double dt = 1.0 / 1400.0;
   for (std::size_t i = 0; i < p.size(); ++i) c.current.p.position[i] += dt * out.velocity[i];
@@ -89,7 +89,7 @@ void BM_ConjugateGradientCold(benchmark::State& state) {
   params.warm_start = false;
   ResistanceSolver solver(c.species_radius, params);
   SolveResult out;
-  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
   report(state, c, out);
 }
 
@@ -99,9 +99,9 @@ void BM_ConjugateGradientWarm(benchmark::State& state) {
   SolveResult out;
   for (auto _ : state) {
     state.PauseTiming();
-    solver.solve(c.previous.p, c.previous.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+    solver.solve(c.previous.p, c.previous.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
     state.ResumeTiming();
-    solver.solve(c.current.p, c.current.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+    solver.solve(c.current.p, c.current.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
   }
   report(state, c, out);
 }
@@ -114,9 +114,9 @@ void BM_ConjugateGradientWarmBlockJacobi(benchmark::State& state) {
   SolveResult out;
   for (auto _ : state) {
     state.PauseTiming();
-    solver.solve(c.previous.p, c.previous.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+    solver.solve(c.previous.p, c.previous.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
     state.ResumeTiming();
-    solver.solve(c.current.p, c.current.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+    solver.solve(c.current.p, c.current.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
   }
   report(state, c, out);
 }
@@ -127,8 +127,8 @@ void BM_AssemblyAndStress(benchmark::State& state) {
   const Configuration& c = configuration(static_cast<std::size_t>(state.range(0)));
   ResistanceSolver solver(c.species_radius, {});
   SolveResult out;
-  solver.solve(c.current.p, c.current.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
-  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+  solver.solve(c.current.p, c.current.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
+  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
   report(state, c, out);
 }
 
@@ -138,8 +138,8 @@ void BM_CholeskyPatternReused(benchmark::State& state) {
   params.solver = LinearSolver::cholesky;
   ResistanceSolver solver(c.species_radius, params);
   SolveResult out;
-  solver.solve(c.previous.p, c.previous.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
-  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+  solver.solve(c.previous.p, c.previous.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
+  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
   report(state, c, out);
   state.counters["analyses"] = solver.pattern_analyses();
 }
@@ -151,7 +151,7 @@ void BM_CholeskyFreshAnalysis(benchmark::State& state) {
   SolveResult out;
   for (auto _ : state) {
     ResistanceSolver solver(c.species_radius, params);
-    solver.solve(c.current.p, c.current.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+    solver.solve(c.current.p, c.current.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
   }
   report(state, c, out);
 }
@@ -161,7 +161,7 @@ void BM_MatrixVectorProduct(benchmark::State& state) {
   const Configuration& c = configuration(static_cast<std::size_t>(state.range(0)));
   ResistanceSolver solver(c.species_radius, {});
   SolveResult out;
-  solver.solve(c.current.p, c.current.pairs, hydro::SimpleShear(1.0), c.force, c.torque, out);
+  solver.solve(c.current.p, c.current.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
   const Eigen::VectorXd x = solver.disturbance();
   Eigen::VectorXd y(x.size());
   for (auto _ : state) {

@@ -51,7 +51,7 @@ Errors isolated_sphere(int n, double split, double widths, double& c) {
     const MobilityResult rt = solver.solve({.positions = p, .radii = r, .torques = t});
     const Vec3 expect = t[0] / (8.0 * pi);
     e.omega = std::max(e.omega, (rt.angular_velocities[0] - expect).norm() / expect.norm());
-    const MobilityResult rs = solver.solve({.positions = p, .radii = r, .shear_rate = 1.0});
+    const MobilityResult rs = solver.solve({.positions = p, .radii = r, .flow = AmbientFlow::simple_shear(1.0)});
     e.s = std::max(e.s, std::abs(rs.stresslets[0](0, 1) / (20.0 / 3.0 * pi * 0.5) - 1.0));
     c = solver.split_width();
   }

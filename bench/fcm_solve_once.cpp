@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
       const std::vector<Mat3> zero(p.size(), Mat3::Zero());
       std::mt19937_64 step_rng(11);
       std::normal_distribution<double> normal;
-      MobilityProblem pb{p, rad, force, torque, 1.0, 1.3, zero};
+      MobilityProblem pb{p, rad, force, torque, AmbientFlow::simple_shear(1.0), 1.3, zero};
       const double t0 = omp_get_wtime();
       MobilityResult r = solver.solve(pb);
       const double t1 = omp_get_wtime();

@@ -14,6 +14,8 @@
 #include <memory>
 #include <string>
 
+#include "core/ambient_flow.hpp"
+
 namespace suspend {
 
 enum class FlowControl { rate, stress };
@@ -72,6 +74,11 @@ struct Flow {
   double next_event_strain(double accumulated_strain) const { return protocol->next_event_strain(accumulated_strain); }
   double next_event_time(double time) const { return protocol->next_event_time(time); }
   double period() const { return protocol->period(); }
+  // The ambient flow at shear rate `rate` in a box of height L_y: simple shear (L = rate e_x e_y) with this flow's
+  // wave. The one place a rate becomes U_inf, Omega_inf and E_inf, for every hydrodynamic model.
+  AmbientFlow ambient(double rate, double box_height) const {
+    return AmbientFlow::wavy_shear(rate, wave_amplitude, wave_periods, box_height);
+  }
   // The rate of a run's progress strain: signed for steady shear, |gammadot| for the other protocols.
   double progress_rate(double rate) const;
 };

@@ -57,10 +57,10 @@ CoupledMobility::CoupledMobility(const Vec3& box_length, std::array<int, 3> grid
 void CoupledMobility::solve_parts(const CoupledProblem& problem, SubgridLubrication* subgrid,
                                   CoupledResult& shear_part, CoupledResult& force_part) {
   CoupledProblem shear = problem, force = problem;
-  shear.shear_rate = 1.0;
+  shear.flow = AmbientFlow::simple_shear(1.0);
   shear.forces = {};
   shear.torques = {};
-  force.shear_rate = 0.0;
+  force.flow = AmbientFlow::simple_shear(0.0);
   // A lagged-far-field second part reuses the near-field matrix of the first (same configuration).
   lagged_matrix_ready_ = false;
   keep_lagged_matrix_ = true;
@@ -164,8 +164,8 @@ void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgri
     throw InputError("coupling: positions, radii, forces and torques need one entry per particle");
   const Index nv = 6 * static_cast<Index>(n), ns = 5 * static_cast<Index>(n);
   const auto& basis = traceless_basis();
-  Mat3 e_inf = Mat3::Zero();
-  e_inf(0, 1) = e_inf(1, 0) = 0.5 * pb.shear_rate;
+  if (!pb.flow.is_simple_shear()) throw InputError("coupling: the Lees-Edwards grid carries simple shear only");
+  const Mat3 e_inf = pb.flow.strain_rate();
   Eigen::VectorXd e_inf_coeff(5);
   for (int k = 0; k < 5; ++k) e_inf_coeff(k) = (basis[k].array() * e_inf.array()).sum();
 
@@ -176,7 +176,7 @@ void CoupledMobility::solve(const CoupledProblem& pb, SubgridLubrication* subgri
     if (!pb.torques.empty()) f0.segment<3>(6 * static_cast<Index>(i) + 3) = pb.torques[i];
   }
   double t0 = omp_get_wtime();
-  if (subgrid) subgrid->add_strain_forces(pb.shear_rate, f0);
+  if (subgrid) subgrid->add_strain_forces(pb.flow.shear_rate(), f0);
   timings_.subgrid += omp_get_wtime() - t0;
 
   if (!params_.warm_start || x_.size() != nv + ns) {
@@ -381,15 +381,15 @@ void CoupledMobility::write_result(const CoupledProblem& pb, SubgridLubrication*
   out.stresslets.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Index o = 6 * static_cast<Index>(i);
-    out.velocities[i] = x_.segment<3>(o) + Vec3(pb.shear_rate * pb.positions[i].y(), 0.0, 0.0);
-    out.angular_velocities[i] = x_.segment<3>(o + 3) + Vec3(0.0, 0.0, -0.5 * pb.shear_rate);
+    out.velocities[i] = x_.segment<3>(o) + pb.flow.velocity(pb.positions[i]);
+    out.angular_velocities[i] = x_.segment<3>(o + 3) + pb.flow.angular_velocity();
     Mat3 m = Mat3::Zero();
     for (int k = 0; k < 5; ++k) m += x_(nv + 5 * static_cast<Index>(i) + k) * basis[k];
     out.stresslets[i] = m;
   }
-  out.subgrid_stress = subgrid ? subgrid->stress(x_.head(nv), pb.shear_rate) : Mat3::Zero();
+  out.subgrid_stress = subgrid ? subgrid->stress(x_.head(nv), pb.flow.shear_rate()) : Mat3::Zero();
   if (subgrid)
-    subgrid->contact_changes(x_.head(nv), pb.shear_rate, out.contact_change_on_j);
+    subgrid->contact_changes(x_.head(nv), pb.flow.shear_rate(), out.contact_change_on_j);
   else
     out.contact_change_on_j.clear();
 }

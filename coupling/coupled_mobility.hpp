@@ -81,7 +81,7 @@ struct CoupledProblem {
   std::span<const double> radii{};
   std::span<const Vec3> forces{};   // external, ON the particles; empty: zero
   std::span<const Vec3> torques{};  // empty: zero
-  double shear_rate = 0.0;
+  AmbientFlow flow{};  // simple shear (the Lees-Edwards grid); zero: quiescent
   double shear_offset = 0.0;
   // false: the far field of the last full solve is reused (contract, "Lagged far field"), if one is stored.
   bool refresh_far_field = true;
@@ -107,7 +107,7 @@ class CoupledMobility {
   void solve(const CoupledProblem& problem, SubgridLubrication* subgrid, CoupledResult& out);
   // The two linear parts separately, each with its own warm start (for imposed-stress control, where gammadot is
   // chosen after the solve): shear_part for unit shear rate without forces, force_part for the forces without
-  // shear (problem.shear_rate is ignored). The solution for (gammadot, F) is gammadot shear_part + force_part in
+  // shear (problem.flow is ignored). The solution for (gammadot, F) is gammadot shear_part + force_part in
   // every output (velocities, spins, stresslets, subgrid_stress; the ambient flow is linear in gammadot).
   void solve_parts(const CoupledProblem& problem, SubgridLubrication* subgrid, CoupledResult& shear_part,
                    CoupledResult& force_part);

@@ -35,7 +35,7 @@ void FcmParams::validate() const {
 }
 
 FcmModel::FcmModel(const Particles& p, const Box& box, const SimulationParams& params, const FcmParams& fcm)
-    : fcm_(fcm), classes_(p.radius) {
+    : fcm_(fcm), flow_(params.flow), classes_(p.radius) {
   check(params, fcm);
   if (p.size() == 0) throw InputError("fcm: no particles");
   const double a_min = classes_.radius.front();
@@ -77,10 +77,11 @@ coupling::CoupledProblem FcmModel::assemble(const HydroLoad& load, double rate) 
     subgrid_->assemble(load.pairs, classes_.of_particle);
     if (load.implicit.enabled())
       subgrid_->add_contact_steps(load.pairs, *load.implicit.stiffness, load.implicit.dt, p.position,
-                                  load.box.length().y());
+                                  flow_.ambient(1.0, load.box.length().y()));
   }
   subgrid_seconds_ += omp_get_wtime() - t0;
-  coupling::CoupledProblem pb{p.position, p.radius, load.force, load.torque, rate, load.box.shear_offset()};
+  coupling::CoupledProblem pb{p.position, p.radius, load.force, load.torque, flow_.ambient(rate, load.box.length().y()),
+                              load.box.shear_offset()};
   // Full solves at multiples of far_field_every (by step number, so a restart keeps the schedule). The lagged far
   // field holds for the rate of its full solve: an imposed rate that changed since the last step (oscillation,
   // reversal) refreshes it. Stress control solves unit-rate and force parts, which do not depend on it.

@@ -91,6 +91,7 @@ class FcmModel final : public OverdampedModel {
   void respond(const coupling::CoupledResult& r, const std::vector<ActivePair>& pairs, HydroResponse& out) const;
 
   FcmParams fcm_;
+  Flow flow_;  // the imposed flow; its ambient value at each rate (simple shear: FCM refuses the wave)
   RadiusClasses classes_;
   std::optional<coupling::SubgridLubrication> subgrid_;
   std::optional<coupling::CoupledMobility> mobility_;

@@ -86,8 +86,8 @@ void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const st
   link_species_.clear();
   contact_.clear();
   pair_count_ = pairs.size();
-  Mat3 e_hat = Mat3::Zero();
-  e_hat(0, 1) = e_hat(1, 0) = 0.5;
+  // The strain forces per unit shear rate: the flow's rate scales them (add_strain_forces, pair_forces).
+  const Mat3 e_hat = AmbientFlow::simple_shear(1.0).strain_rate();
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const ActivePair& pr = pairs[k];
     const PairGeometry& g = pr.geometry;
@@ -145,17 +145,16 @@ void SubgridLubrication::add_strain_forces(double shear_rate, Eigen::VectorXd& f
 
 void SubgridLubrication::add_contact_steps(const std::vector<ActivePair>& pairs,
                                            const std::vector<ContactStiffness>& stiffness, double dt,
-                                           const std::vector<Vec3>& positions, double ly) {
+                                           const std::vector<Vec3>& positions, const AmbientFlow& unit_flow) {
   if (pairs.size() != pair_count_ || stiffness.size() != pairs.size())
     throw InputError("sub-grid lubrication: contact stiffnesses must match the assembled pair list");
-  const hydro::WavyShear unit_shear{1.0, 0.0, 0, ly};
   link_contact_.assign(links_.size(), -1);
   contact_.clear();
   std::size_t stiff = 0;
   for (std::size_t l = 0; l < links_.size(); ++l) {
     const std::size_t k = link_pair_[l];
     if (!stiffness[k].any()) continue;
-    const ContactStep c = contact_step(pairs[k].geometry, positions[pairs[k].i], stiffness[k], dt, unit_shear);
+    const ContactStep c = contact_step(pairs[k].geometry, positions[pairs[k].i], stiffness[k], dt, unit_flow);
     // (Its resistance is applied from `contact_` in pair_forces and resistance_matrix: delta_r_ holds the
     // lubrication blocks' coefficients only.)
     delta_strain_[l] += c.ambient_force();

@@ -67,11 +67,12 @@ class SubgridLubrication {
   Mat3 stress(const Eigen::VectorXd& dv, double shear_rate) const;
 
   // Linearly implicit contacts (dem/integrate/implicit_contacts.hpp), after assemble(): the step resistance
-  // dt C^T S C of every pair with a contact stiffness and its ambient force (simple shear, per unit rate; box
-  // height ly) are added to that pair's terms, so the velocity solve balances the end-of-step contact forces.
+  // dt C^T S C of every pair with a contact stiffness and its ambient force in the imposed flow at unit rate
+  // (unit_flow: simple shear) are added to that pair's terms, so the velocity solve balances the end-of-step
+  // contact forces.
   // Contact pairs are always within the correction range (s' < cutoff).
   void add_contact_steps(const std::vector<ActivePair>& pairs, const std::vector<ContactStiffness>& stiffness,
-                         double dt, const std::vector<Vec3>& positions, double ly);
+                         double dt, const std::vector<Vec3>& positions, const AmbientFlow& unit_flow);
   // Per pair of the assembled list: the contact force change on j, -dt S u_c, for disturbance velocities dv and
   // the shear rate (zero for pairs without a contact step; empty without any).
   void contact_changes(const Eigen::VectorXd& dv, double shear_rate, std::vector<Vec3>& change_on_j) const;

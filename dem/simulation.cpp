@@ -109,7 +109,7 @@ double Simulation::overdamped_velocities(const HydroLoad& load) {
   iterations_ = response->iterations;
   residual_ = response->residual;
   double max_speed = 0.0;
-  const hydro::WavyShear f = flow(rate_);
+  const AmbientFlow f = flow(rate_);
   for (std::size_t i = 0; i < n; ++i) {
     p.velocity[i] = response->velocity[i];
     p.angular_velocity[i] = response->angular_velocity[i];
@@ -138,8 +138,7 @@ void Simulation::finish_stress(const StressTensors& hydrodynamic) {
   for (std::size_t c = 0; c < contribution_count; ++c) stress_.part[c] += hydrodynamic.part[c];
   for (auto& m : stress_.part) m /= box_.volume();
   // The fluid's 2 eta <E_inf>: the wave averages to zero over whole periods.
-  stress_[Contribution::hydrodynamic](0, 1) += rate_;
-  stress_[Contribution::hydrodynamic](1, 0) += rate_;
+  stress_[Contribution::hydrodynamic] += flow(rate_).ambient_stress();
 }
 
 double Simulation::pair_rate(double rate) const {

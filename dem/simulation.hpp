@@ -37,7 +37,7 @@
 #include "dem/contact/contact_law.hpp"
 #include "dem/contact_history.hpp"
 #include "dem/contact_stage.hpp"
-#include "dem/hydro/ambient_flow.hpp"
+#include "core/ambient_flow.hpp"
 #include "dem/hydrodynamic_model.hpp"
 #include "dem/integrate/resistance_solver.hpp"
 #include "dem/integrate/time_step_control.hpp"
@@ -121,7 +121,7 @@ class Simulation {
   double contact_seconds() const { return contact_seconds_; }
 
  private:
-  hydro::WavyShear flow(double rate) const { return hydro::ambient_flow(params_.flow, rate, box_.length().y()); }
+  AmbientFlow flow(double rate) const { return params_.flow.ambient(rate, box_.length().y()); }
   [[noreturn]] void fail(const std::string& what) const;
   HydroLoad load(const ImplicitContacts& implicit) const;
   double overdamped_velocities(const HydroLoad& load);  // return the largest non-affine speed

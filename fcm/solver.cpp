@@ -26,12 +26,6 @@ double dot(std::span<const Mat3> a, std::span<const Mat3> b) {
   return s;
 }
 
-Mat3 ambient_strain(double shear_rate) {
-  Mat3 e = Mat3::Zero();
-  e(0, 1) = e(1, 0) = 0.5 * shear_rate;
-  return e;
-}
-
 }  // namespace
 
 void SolverOptions::validate() const {
@@ -174,9 +168,10 @@ MobilityResult Solver::solve(const MobilityProblem& pb) {
   if ((!pb.forces.empty() && pb.forces.size() != n) || (!pb.torques.empty() && pb.torques.size() != n) ||
       (!pb.stresslet_guess.empty() && pb.stresslet_guess.size() != n))
     throw InputError("fcm: forces, torques and stresslet guesses need one entry per particle");
-  if (!std::isfinite(pb.shear_rate)) throw InputError("fcm: shear rate must be finite");
-  const Mat3 e_inf = ambient_strain(pb.shear_rate);
-  const Vec3 omega_inf(0.0, 0.0, -0.5 * pb.shear_rate);
+  pb.flow.validate();
+  if (!pb.flow.is_simple_shear()) throw InputError("fcm: the Lees-Edwards grid carries simple shear only");
+  const Mat3 e_inf = pb.flow.strain_rate();
+  const Vec3 omega_inf = pb.flow.angular_velocity();
 
   MobilityResult res;
   res.stresslets.assign(n, Mat3::Zero());
@@ -270,18 +265,18 @@ MobilityResult Solver::solve(const MobilityProblem& pb) {
   res.velocities.resize(n);
   res.angular_velocities.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    res.velocities[i] = u[i] + Vec3(pb.shear_rate * pb.positions[i].y(), 0.0, 0.0);
+    res.velocities[i] = u[i] + pb.flow.velocity(pb.positions[i]);
     res.angular_velocities[i] = omega[i] + omega_inf;
   }
   res.strain_rates = std::move(r);
   return res;
 }
 
-Mat3 Solver::bulk_stress(const MobilityResult& result, double shear_rate, std::span<const Mat3> moments) const {
+Mat3 Solver::bulk_stress(const MobilityResult& result, const AmbientFlow& flow, std::span<const Mat3> moments) const {
   Mat3 sum = Mat3::Zero();
   for (const Mat3& s : result.stresslets) sum += s;
   for (const Mat3& m : moments) sum += m;
-  return 2.0 * ambient_strain(shear_rate) + sum / grid_.length.prod();
+  return flow.ambient_stress() + sum / grid_.length.prod();
 }
 
 }  // namespace suspend::fcm

@@ -17,6 +17,7 @@
 #include <span>
 #include <vector>
 
+#include "core/ambient_flow.hpp"
 #include "core/vec.hpp"
 #include "fcm/disturbance.hpp"
 #include "fcm/fft.hpp"
@@ -62,7 +63,7 @@ struct MobilityProblem {
   std::span<const double> radii{};
   std::span<const Vec3> forces{};         // on the particles (= on the fluid); empty means zero
   std::span<const Vec3> torques{};        // empty means zero
-  double shear_rate = 0.0;                // gammadot
+  AmbientFlow flow{};                     // the imposed flow: simple shear (the Lees-Edwards grid); zero: quiescent
   double shear_offset = 0.0;              // Lees-Edwards offset D (any value; wrapped internally)
   std::span<const Mat3> stresslet_guess{};  // empty: the previous solution if the particle count matches
 };
@@ -101,7 +102,7 @@ class Solver {
 
   // Bulk stress 2 eta E_inf + (1/V) sum_n S_n + (1/V) sum of `moments` (e.g. the interparticle-force
   // stresslets the caller accumulated), eta = 1 (Batchelor 1970; docs/fcm.md). Pressure not included.
-  Mat3 bulk_stress(const MobilityResult& result, double shear_rate, std::span<const Mat3> moments = {}) const;
+  Mat3 bulk_stress(const MobilityResult& result, const AmbientFlow& flow, std::span<const Mat3> moments = {}) const;
 
   const ShearedGrid& grid() const { return grid_; }
   const SolverOptions& options() const { return options_; }

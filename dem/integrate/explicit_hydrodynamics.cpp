@@ -49,7 +49,7 @@ void ExplicitHydrodynamics::build_incidence(std::size_t n, const std::vector<int
 }
 
 void ExplicitHydrodynamics::evaluate(const Particles& p, const std::vector<int>& species,
-                                     const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
+                                     const std::vector<ActivePair>& pairs, const AmbientFlow& flow,
                                      const Eigen::VectorXd& dv, const std::vector<double>& mass,
                                      const std::vector<double>& moment, ExplicitHydroResult& out) {
   const std::size_t n = p.size();

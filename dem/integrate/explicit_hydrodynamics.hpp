@@ -33,7 +33,7 @@
 
 #include "core/particles.hpp"
 #include "core/stress.hpp"
-#include "dem/hydro/ambient_flow.hpp"
+#include "core/ambient_flow.hpp"
 #include "dem/hydro/lubrication.hpp"
 #include "dem/integrate/resistance_solver.hpp"
 #include "dem/integrate/species_lubrication.hpp"
@@ -57,7 +57,7 @@ class ExplicitHydrodynamics {
   // beyond the outer cutoff are skipped); dv: 6 per particle; mass, moment: per particle (for the rate bound).
   // flow.box_height must be the box's L_y. Throws InputError for inconsistent sizes or radii.
   void evaluate(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
-                const hydro::WavyShear& flow, const Eigen::VectorXd& dv, const std::vector<double>& mass,
+                const AmbientFlow& flow, const Eigen::VectorXd& dv, const std::vector<double>& mass,
                 const std::vector<double>& moment, ExplicitHydroResult& out);
 
   // Bytes held by the workspaces (their capacity).

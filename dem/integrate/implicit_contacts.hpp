@@ -20,7 +20,7 @@
 #include "core/stress.hpp"
 #include "core/vec.hpp"
 #include "dem/contact/pair_geometry.hpp"
-#include "dem/hydro/ambient_flow.hpp"
+#include "core/ambient_flow.hpp"
 #include "dem/hydro/lubrication.hpp"
 #include "dem/pair_forces.hpp"
 
@@ -54,7 +54,7 @@ inline Mat3 step_stiffness(const Vec3& n, const ContactStiffness& k, double dt) 
 
 // Contact velocity of the ambient flow, C V_inf, with j's image at x_i + d (Lees-Edwards: the image velocity
 // follows from the unwrapped position).
-inline Vec3 ambient_contact_velocity(const PairGeometry& g, const Vec3& x_i, const hydro::WavyShear& flow) {
+inline Vec3 ambient_contact_velocity(const PairGeometry& g, const Vec3& x_i, const AmbientFlow& flow) {
   const Vec3 x_j = x_i + g.d;
   return (flow.velocity(x_j) - flow.velocity(x_i)) +
          g.n.cross(g.lever_i() * flow.angular_velocity(x_i) + g.lever_j() * flow.angular_velocity(x_j));
@@ -80,7 +80,7 @@ inline void add_contact_change_virial(const PairGeometry& g, const Vec3& change,
 }
 
 inline ContactStep contact_step(const PairGeometry& g, const Vec3& x_i, const ContactStiffness& k, double dt,
-                                const hydro::WavyShear& flow) {
+                                const AmbientFlow& flow) {
   return {contact_velocity_operator(g), step_stiffness(g.n, k, dt), ambient_contact_velocity(g, x_i, flow)};
 }
 

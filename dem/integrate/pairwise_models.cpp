@@ -22,7 +22,7 @@ void add_stokes_stresslets(const Particles& p, const Flow& f, StressTensors& sum
 void StokesDragModel::respond(const HydroLoad& load, double rate, bool loaded, HydroResponse& out) const {
   const Particles& p = load.particles;
   const std::size_t n = p.size();
-  const hydro::WavyShear f = hydro::ambient_flow(flow_, rate, load.box.length().y());
+  const AmbientFlow f = flow_.ambient(rate, load.box.length().y());
   out.velocity.resize(n);
   out.angular_velocity.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -55,7 +55,7 @@ PairwiseResistanceModel::PairwiseResistanceModel(const Particles& p, const Flow&
 
 HydroResponse& PairwiseResistanceModel::solve(const HydroLoad& load, double rate) {
   const Particles& p = load.particles;
-  solver_.solve(p, classes_.of_particle, load.pairs, hydro::ambient_flow(flow_, rate, load.box.length().y()),
+  solver_.solve(p, classes_.of_particle, load.pairs, flow_.ambient(rate, load.box.length().y()),
                 load.force, load.torque, out_, load.where, load.implicit);
   return out_;
 }
@@ -63,8 +63,8 @@ HydroResponse& PairwiseResistanceModel::solve(const HydroLoad& load, double rate
 std::pair<HydroResponse&, HydroResponse&> PairwiseResistanceModel::solve_parts(const HydroLoad& load) {
   const double ly = load.box.length().y();
   // Velocities, stress and the implicit contact changes are linear in (gammadot, F): one matrix, two loads.
-  solver_.solve_parts(load.particles, classes_.of_particle, load.pairs, hydro::ambient_flow(flow_, 1.0, ly),
-                      hydro::ambient_flow(flow_, 0.0, ly), load.force, load.torque, out_, force_out_, load.where,
+  solver_.solve_parts(load.particles, classes_.of_particle, load.pairs, flow_.ambient(1.0, ly),
+                      flow_.ambient(0.0, ly), load.force, load.torque, out_, force_out_, load.where,
                       load.implicit);
   return {out_, force_out_};
 }
@@ -95,7 +95,7 @@ const ExplicitResponse& ExplicitPairwiseModel::explicit_forces(const HydroLoad& 
                                                                const std::vector<double>& mass,
                                                                const std::vector<double>& moment) {
   const Particles& p = load.particles;
-  const hydro::WavyShear f = hydro::ambient_flow(flow_, rate, load.box.length().y());
+  const AmbientFlow f = flow_.ambient(rate, load.box.length().y());
   if (explicit_) {
     explicit_->evaluate(p, classes_.of_particle, load.pairs, f, dv, mass, moment, out_);
     return out_;

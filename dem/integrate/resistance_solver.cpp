@@ -30,14 +30,14 @@ void ResistanceSolverParams::validate() const {
 ResistanceSolver::ResistanceSolver(std::vector<double> species_radius, const ResistanceSolverParams& params)
     : params_(validated(params)), law_(std::move(species_radius), params_.lubrication, "resistance solver") {}
 
-void ResistanceSolver::solve(const Particles& p, const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
+void ResistanceSolver::solve(const Particles& p, const std::vector<ActivePair>& pairs, const AmbientFlow& flow,
                              const std::vector<Vec3>& force, const std::vector<Vec3>& torque, SolveResult& out,
                              std::string_view context, const ImplicitContacts& implicit) {
   solve(p, p.species, pairs, flow, force, torque, out, context, implicit);
 }
 
 void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& species,
-                                const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
+                                const std::vector<ActivePair>& pairs, const AmbientFlow& flow,
                                 const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
                                 const ImplicitContacts& implicit) {
   const std::size_t n = p.size();
@@ -166,7 +166,7 @@ void ResistanceSolver::solve_assembled(const Eigen::VectorXd& b, Eigen::VectorXd
 }
 
 void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
-                             const hydro::WavyShear& flow, const std::vector<Vec3>& force,
+                             const AmbientFlow& flow, const std::vector<Vec3>& force,
                              const std::vector<Vec3>& torque, SolveResult& out, std::string_view context,
                              const ImplicitContacts& implicit) {
   check(p, species, pairs, force, torque, implicit);
@@ -177,8 +177,8 @@ void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species
 }
 
 void ResistanceSolver::solve_parts(const Particles& p, const std::vector<int>& species,
-                                   const std::vector<ActivePair>& pairs, const hydro::WavyShear& unit_flow,
-                                   const hydro::WavyShear& still_flow, const std::vector<Vec3>& force,
+                                   const std::vector<ActivePair>& pairs, const AmbientFlow& unit_flow,
+                                   const AmbientFlow& still_flow, const std::vector<Vec3>& force,
                                    const std::vector<Vec3>& torque, SolveResult& unit_out, SolveResult& force_out,
                                    std::string_view context, const ImplicitContacts& implicit) {
   check(p, species, pairs, force, torque, implicit);
@@ -201,7 +201,7 @@ void ResistanceSolver::solve_parts(const Particles& p, const std::vector<int>& s
 }
 
 void ResistanceSolver::report_solution(const Particles& p, const std::vector<int>& species,
-                                       const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
+                                       const std::vector<ActivePair>& pairs, const AmbientFlow& flow,
                                        const Eigen::VectorXd& x, bool strain_driven, SolveResult& out,
                                        const ImplicitContacts& implicit) {
   const std::size_t n = p.size();
@@ -217,7 +217,7 @@ void ResistanceSolver::report_solution(const Particles& p, const std::vector<int
 }
 
 void ResistanceSolver::explicit_forces(const Particles& p, const std::vector<int>& species,
-                                       const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
+                                       const std::vector<ActivePair>& pairs, const AmbientFlow& flow,
                                        const Eigen::VectorXd& dv, Eigen::VectorXd& force, SolveResult& out) {
   const std::size_t n = p.size();
   if (species.size() != n || dv.size() != 6 * static_cast<Eigen::Index>(n))
@@ -246,7 +246,7 @@ double ResistanceSolver::relaxation_rate(const std::vector<double>& mass, const 
 }
 
 void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<int>& species,
-                                         const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
+                                         const std::vector<ActivePair>& pairs, const AmbientFlow& flow,
                                          const Eigen::VectorXd& x, bool strain_driven, SolveResult& out,
                                          const ImplicitContacts& implicit) {
   const std::ptrdiff_t np = static_cast<std::ptrdiff_t>(pairs.size());

@@ -37,7 +37,7 @@
 
 #include "core/particles.hpp"
 #include "core/stress.hpp"
-#include "dem/hydro/ambient_flow.hpp"
+#include "core/ambient_flow.hpp"
 #include "dem/hydro/lubrication.hpp"
 #include "linalg/block_matrix.hpp"
 #include "linalg/conjugate_gradient.hpp"
@@ -118,17 +118,17 @@ class ResistanceSolver {
   // With `implicit` enabled, pairs with a contact stiffness get a block even beyond the outer cutoff, the matrix is
   // R_Stokes + sum R_lub + sum dt C^T S C and the right-hand side gains -C^T dt S u_c,inf.
   void solve(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
-             const hydro::WavyShear& flow, const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
+             const AmbientFlow& flow, const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
              SolveResult& out, std::string_view context = {}, const ImplicitContacts& implicit = {});
   // Imposed stress: the unit-rate part (flow `unit_flow`, no forces) and the force-driven part (flow `still_flow`,
   // i.e. rate 0, with force and torque) of one matrix, assembled and factorised once; each part warm-starts from its
   // own last solution (disturbance(), forced_disturbance()).
   void solve_parts(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
-                   const hydro::WavyShear& unit_flow, const hydro::WavyShear& still_flow,
+                   const AmbientFlow& unit_flow, const AmbientFlow& still_flow,
                    const std::vector<Vec3>& force, const std::vector<Vec3>& torque, SolveResult& unit_out,
                    SolveResult& force_out, std::string_view context = {}, const ImplicitContacts& implicit = {});
   // Same, with the species of p.species.
-  void solve(const Particles& p, const std::vector<ActivePair>& pairs, const hydro::WavyShear& flow,
+  void solve(const Particles& p, const std::vector<ActivePair>& pairs, const AmbientFlow& flow,
              const std::vector<Vec3>& force, const std::vector<Vec3>& torque, SolveResult& out,
              std::string_view context = {}, const ImplicitContacts& implicit = {});
 
@@ -137,7 +137,7 @@ class ResistanceSolver {
   //   F_H = R_FE : E_inf + F_Faxen - (R_Stokes + R_lub) dv,
   // with `out` holding dv as lab velocities and the stress sums as solve() reports them. Replaces the warm start.
   void explicit_forces(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
-                       const hydro::WavyShear& flow, const Eigen::VectorXd& dv, Eigen::VectorXd& force,
+                       const AmbientFlow& flow, const Eigen::VectorXd& dv, Eigen::VectorXd& force,
                        SolveResult& out);
   // Largest eigenvalue bound of M^-1 R for the matrix of the last call (Gershgorin: max over rows of the absolute
   // row sum divided by that row's mass or moment of inertia): the explicit scheme is stable for dt < 2 / rate.
@@ -163,7 +163,7 @@ class ResistanceSolver {
 
  private:
   void assemble(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
-                const hydro::WavyShear& flow, const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
+                const AmbientFlow& flow, const std::vector<Vec3>& force, const std::vector<Vec3>& torque,
                 const ImplicitContacts& implicit = {});
   bool stiff(const ImplicitContacts& implicit, std::size_t k) const {
     return implicit.enabled() && (*implicit.stiffness)[k].any();
@@ -177,10 +177,10 @@ class ResistanceSolver {
   // Lab-frame velocities of the disturbance x, and the stress sums, into out; strain_driven: the assembled strain
   // forces belong to this solution (false for the force-driven part of solve_parts).
   void report_solution(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
-                       const hydro::WavyShear& flow, const Eigen::VectorXd& x, bool strain_driven, SolveResult& out,
+                       const AmbientFlow& flow, const Eigen::VectorXd& x, bool strain_driven, SolveResult& out,
                        const ImplicitContacts& implicit = {});
   void accumulate_stress(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
-                         const hydro::WavyShear& flow, const Eigen::VectorXd& x, bool strain_driven, SolveResult& out,
+                         const AmbientFlow& flow, const Eigen::VectorXd& x, bool strain_driven, SolveResult& out,
                          const ImplicitContacts& implicit);
 
   ResistanceSolverParams params_;

@@ -11,7 +11,7 @@
 namespace suspend {
 
 VerletIntegrator::VerletIntegrator(InertialModel& model, const Particles& p, double stokes_number,
-                                   const std::vector<double>& saved, const hydro::WavyShear& flow)
+                                   const std::vector<double>& saved, const AmbientFlow& flow)
     : model_(model) {
   const std::size_t n = p.size();
   mass_.resize(n);
@@ -42,7 +42,7 @@ void VerletIntegrator::set_contact_velocities(Particles& p) const {
   }
 }
 
-const ExplicitResponse& VerletIntegrator::velocities(const HydroLoad& load, double rate, const hydro::WavyShear& flow,
+const ExplicitResponse& VerletIntegrator::velocities(const HydroLoad& load, double rate, const AmbientFlow& flow,
                                                      double last_dt, Particles& p, double& max_speed) {
   const std::size_t n = p.size();
   const std::vector<double>& v = state_;

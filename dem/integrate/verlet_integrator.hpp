@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/particles.hpp"
-#include "dem/hydro/ambient_flow.hpp"
+#include "core/ambient_flow.hpp"
 #include "dem/hydrodynamic_model.hpp"
 
 namespace suspend {
@@ -19,7 +19,7 @@ class VerletIntegrator {
   // acceleration: with last_dt = 0 the first evaluation gives u^0 = U_inf and a^0 = F(x^0, U_inf) / m, as eq. 15
   // needs. Throws InputError for a saved state of the wrong size. `model` answers the step's force question.
   VerletIntegrator(InertialModel& model, const Particles& p, double stokes_number, const std::vector<double>& saved,
-                   const hydro::WavyShear& flow);
+                   const AmbientFlow& flow);
   // The state to checkpoint: 12 numbers per particle (u, w at the half step, then a, alpha).
   const std::vector<double>& saved() const { return state_; }
 
@@ -28,7 +28,7 @@ class VerletIntegrator {
   // The hydrodynamic force at the half-step velocities in the flow at `rate`, the accelerations a^{n+1} from it and
   // the load's contact forces, and u^{n+1} = u^{n+1/2} + (last_dt / 2) a^{n+1} (eq. 15d) into p. Returns the model's
   // response (its stress sums); `max_speed` gets the largest speed relative to the flow.
-  const ExplicitResponse& velocities(const HydroLoad& load, double rate, const hydro::WavyShear& flow, double last_dt,
+  const ExplicitResponse& velocities(const HydroLoad& load, double rate, const AmbientFlow& flow, double last_dt,
                                      Particles& p, double& max_speed);
   // The explicit stability bound: `stability` x the contact time sqrt(m_min / k) and x the fastest hydrodynamic
   // relaxation time of the last evaluation.

@@ -48,7 +48,7 @@ TEST(CouplingSingleSphere, DragTorqueAndStressletAreTheFcmValues) {
 
   CoupledMobility s = make(l);
   CoupledResult q;
-  s.solve({.positions = pos, .radii = rad, .shear_rate = 2.0, .shear_offset = 3.0}, nullptr, q);
+  s.solve({.positions = pos, .radii = rad, .flow = AmbientFlow::simple_shear(2.0), .shear_offset = 3.0}, nullptr, q);
   // Tolerances as in test_fcm_lees_edwards: the dipole's grid-position error at h = a/2 (docs/fcm.md).
   EXPECT_NEAR(q.velocities[0].x(), 2.0 * pos[0].y(), 1e-3);
   EXPECT_NEAR(q.angular_velocities[0].z(), -1.0, 5e-3);
@@ -58,7 +58,7 @@ TEST(CouplingSingleSphere, DragTorqueAndStressletAreTheFcmValues) {
   const int n = static_cast<int>(l / 0.5);
   fcm::Solver direct(Vec3::Constant(l), {n, n, n}, o);
   const fcm::MobilityResult d =
-      direct.solve({.positions = pos, .radii = rad, .shear_rate = 2.0, .shear_offset = 3.0});
+      direct.solve({.positions = pos, .radii = rad, .flow = AmbientFlow::simple_shear(2.0), .shear_offset = 3.0});
   EXPECT_LT((d.velocities[0] - q.velocities[0]).norm(), 1e-7);
   EXPECT_LT((d.angular_velocities[0] - q.angular_velocities[0]).norm(), 1e-7);
   EXPECT_LT((d.stresslets[0] - q.stresslets[0]).norm(), 1e-6 * d.stresslets[0].norm());

@@ -68,7 +68,7 @@ TEST(ExplicitHydrodynamics, MatrixFreeForcesStressAndRateEqualTheAssembledOnes) 
   int across = 0;
   for (const ActivePair& pr : c.pairs) across += pr.y_images != 0 && pr.geometry.gap() <= 0.25 ? 1 : 0;
   ASSERT_GT(across, 10);  // lubricated pairs across the sheared faces
-  const hydro::WavyShear flow{1.3, 0.8, 1, c.box.length().y()};
+  const AmbientFlow flow = AmbientFlow::wavy_shear(1.3, 0.8, 1, c.box.length().y());
 
   for (const LubricationStress form : {LubricationStress::force_dipole, LubricationStress::stresslet}) {
     ResistanceSolverParams params;
@@ -101,7 +101,7 @@ TEST(ExplicitHydrodynamics, MatrixFreeForcesStressAndRateEqualTheAssembledOnes) 
 
 TEST(ExplicitHydrodynamics, ResultIsBitIdenticalForAnyThreadCount) {
   Configuration c = dense_sheared(600);
-  const hydro::WavyShear flow{1.0, 0.5, 1, c.box.length().y()};
+  const AmbientFlow flow = AmbientFlow::wavy_shear(1.0, 0.5, 1, c.box.length().y());
   ExplicitHydroResult out[2];
   const int threads = omp_get_max_threads();
   for (int k = 0; k < 2; ++k) {

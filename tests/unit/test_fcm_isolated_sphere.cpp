@@ -78,7 +78,7 @@ TEST(FcmIsolatedSphere, TorqueRotationAndStrainStresslet) {
     const Vec3 expect = t[0] / (8.0 * pi) * (1.0 - phi);
     const double rot = (res.angular_velocities[0] - expect).norm() / expect.norm();
     // Rigid sphere in simple shear, no force or torque: S = (20/3) pi a^3 E_inf, Omega = -gammadot/2.
-    MobilityProblem sh{.positions = p, .radii = r, .shear_rate = 1.0};
+    MobilityProblem sh{.positions = p, .radii = r, .flow = AmbientFlow::simple_shear(1.0)};
     const MobilityResult rs = s.solve(sh);
     const double strain = std::abs(rs.stresslets[0](0, 1) / (20.0 / 3.0 * pi * 0.5) - 1.0);
     std::cout << "centre (" << pos.transpose() << "): Omega rel. error " << rot << ", S_xy rel. error " << strain
@@ -99,13 +99,13 @@ TEST(FcmBulkStress, ImposedShearPlusStressletsPlusHandedMoments) {
   Solver s(Vec3::Constant(l), {32, 32, 32}, fast_options());
   const std::vector<Vec3> p{Vec3(5.2, 9.1, 3.3)};
   const std::vector<double> r{1.0};
-  const MobilityResult res = s.solve({.positions = p, .radii = r, .shear_rate = gd});
-  const Mat3 sigma = s.bulk_stress(res, gd);
+  const MobilityResult res = s.solve({.positions = p, .radii = r, .flow = AmbientFlow::simple_shear(gd)});
+  const Mat3 sigma = s.bulk_stress(res, AmbientFlow::simple_shear(gd));
   const double phi = 4.0 / 3.0 * pi / vol;
   EXPECT_NEAR(sigma(0, 1) / gd, 1.0 + 2.5 * phi, 0.01 * 2.5 * phi);
   EXPECT_NEAR(sigma(0, 0), res.stresslets[0](0, 0) / vol, 1e-15);
   Mat3 m = Mat3::Zero();
   m(1, 1) = -3.0;  // e.g. a compressive contact moment handed in by the caller
   const std::vector<Mat3> moments{m};
-  EXPECT_NEAR((s.bulk_stress(res, gd, moments) - sigma - m / vol).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((s.bulk_stress(res, AmbientFlow::simple_shear(gd), moments) - sigma - m / vol).norm(), 0.0, 1e-15);
 }

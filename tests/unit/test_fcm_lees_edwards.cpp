@@ -35,7 +35,7 @@ TEST(FcmLeesEdwards, WholePeriodsOfTheOffsetGiveIdenticalVelocities) {
   std::vector<MobilityResult> res;
   for (int m : {0, 1, -2, 7}) {
     MobilityProblem pb{.positions = c.pos, .radii = c.rad, .forces = c.force, .torques = c.torque,
-                       .shear_rate = 0.8, .shear_offset = d + m * 12.0};
+                       .flow = AmbientFlow::simple_shear(0.8), .shear_offset = d + m * 12.0};
     std::vector<Mat3> zero(3, Mat3::Zero());
     pb.stresslet_guess = zero;  // same starting point for every run
     res.push_back(s.solve(pb));
@@ -98,7 +98,7 @@ TEST(FcmLeesEdwards, LoneSphereTranslatesWithTheLocalFlowAndRotatesAtMinusHalfTh
   const std::vector<double> rad{1.0};
   for (const Vec3& p : {Vec3(3.3, 1.7, 9.1), Vec3(12.2, 14.9, 0.4)}) {
     const std::vector<Vec3> pos{p};
-    MobilityProblem pb{.positions = pos, .radii = rad, .shear_rate = 2.0, .shear_offset = 6.3};
+    MobilityProblem pb{.positions = pos, .radii = rad, .flow = AmbientFlow::simple_shear(2.0), .shear_offset = 6.3};
     const MobilityResult r = s.solve(pb);
     EXPECT_NEAR(r.velocities[0].x(), 2.0 * p.y(), 1e-3);
     EXPECT_NEAR(r.velocities[0].y(), 0.0, 1e-3);

@@ -70,7 +70,7 @@ TEST(FcmRigidityPreconditioner, RigidSolutionIsIndependentOfThePreconditioner) {
     o.preconditioner = k == 0 ? RigidityPreconditioner::jacobi : RigidityPreconditioner::near_field;
     Solver solver(Vec3::Constant(l), {24, 24, 24}, o);
     const std::vector<Mat3> zero(pos.size(), Mat3::Zero());
-    res[k] = solver.solve({pos, rad, force, torque, 1.0, 3.7, zero});
+    res[k] = solver.solve({pos, rad, force, torque, AmbientFlow::simple_shear(1.0), 3.7, zero});
   }
   std::cout << n << " spheres: Jacobi " << res[0].iterations << " iterations, near field " << res[1].iterations
             << "\n";
@@ -117,13 +117,13 @@ TEST(FcmRigidityPreconditioner, ReusedFactorAfterASmallStepGivesTheFreshSolution
   o.planning = FftPlanning::estimate;
   o.rigidity_tolerance = 1e-10;
   Solver stepping(Vec3::Constant(l), {24, 24, 24}, o);
-  const MobilityResult first = stepping.solve({pos, rad, force, {}, 1.0, 0.5, {}});
+  const MobilityResult first = stepping.solve({pos, rad, force, {}, AmbientFlow::simple_shear(1.0), 0.5, {}});
   for (Vec3& x : pos) x += 0.05 * Vec3(normal(rng), normal(rng), normal(rng)).normalized();
-  const MobilityResult warm = stepping.solve({pos, rad, force, {}, 1.0, 0.52, {}});
+  const MobilityResult warm = stepping.solve({pos, rad, force, {}, AmbientFlow::simple_shear(1.0), 0.52, {}});
   o.near_field_reuse_displacement = 0.0;
   Solver fresh(Vec3::Constant(l), {24, 24, 24}, o);
   const std::vector<Mat3> zero(pos.size(), Mat3::Zero());
-  const MobilityResult cold = fresh.solve({pos, rad, force, {}, 1.0, 0.52, zero});
+  const MobilityResult cold = fresh.solve({pos, rad, force, {}, AmbientFlow::simple_shear(1.0), 0.52, zero});
   std::cout << n << " spheres: first " << first.iterations << ", warm step with reused factor " << warm.iterations
             << ", fresh " << cold.iterations << " iterations\n";
   EXPECT_LT(warm.iterations, cold.iterations);

@@ -74,7 +74,7 @@ TEST(ImplicitContacts, ContactOperatorIsTheContactModulesKinematics) {
 
 TEST(ImplicitContacts, StepResistanceIsSymmetricPositiveSemidefinite) {
   std::mt19937 rng(11);
-  const hydro::WavyShear flow{1.0, 0.0, 0, 10.0};
+  const AmbientFlow flow = AmbientFlow::wavy_shear(1.0, 0.0, 0, 10.0);
   const PairGeometry g = PairGeometry::from(Vec3(1.1, 1.7, -0.4).normalized() * 1.99, 1.0, 1.0);
   const ContactStep step = contact_step(g, Vec3(1, 2, 3), {3.0e4, 8.0e3}, 1e-3, flow);
   const hydro::Matrix12 r = step.resistance();
@@ -159,7 +159,7 @@ TEST(ImplicitContacts, VelocitiesBalanceTheEndOfStepContactForces) {
   }
   ResistanceSolver solver({1.0, 1.4}, params.resistance);
   SolveResult out;
-  const hydro::WavyShear flow{sim.shear_rate(), 0.0, 0, box.length().y()};
+  const AmbientFlow flow = AmbientFlow::wavy_shear(sim.shear_rate(), 0.0, 0, box.length().y());
   std::vector<int> species(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) species[i] = p.radius[i] > 1.0 ? 1 : 0;
   solver.solve(p, species, pairs, flow, force, torque, out);

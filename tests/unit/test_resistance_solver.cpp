@@ -78,7 +78,7 @@ TEST(ResistanceSolver, IsolatedSphereMovesWithStokesDrag) {
   ResistanceSolver solver(radii, tight());
   const Vec3 f(0.3, -1.2, 2.0), t(-0.5, 0.7, 0.1);
   SolveResult out;
-  solver.solve(p, {}, hydro::SimpleShear(0.0), {f}, {t}, out);
+  solver.solve(p, {}, AmbientFlow::simple_shear(0.0), {f}, {t}, out);
   const double a = 1.4;
   EXPECT_LT((out.velocity[0] - f / (6.0 * pi * a)).norm(), 1e-15);
   EXPECT_LT((out.angular_velocity[0] - t / (8.0 * pi * a * a * a)).norm(), 1e-15);
@@ -91,7 +91,7 @@ TEST(ResistanceSolver, FreeSphereFollowsSimpleShearWithEinsteinStresslet) {
   ResistanceSolver solver(radii, tight());
   SolveResult out;
   const double gammadot = 2.0;
-  solver.solve(p, {}, hydro::SimpleShear(gammadot), {Vec3::Zero()}, {Vec3::Zero()}, out);
+  solver.solve(p, {}, AmbientFlow::simple_shear(gammadot), {Vec3::Zero()}, {Vec3::Zero()}, out);
   EXPECT_LT((out.velocity[0] - Vec3(gammadot * 3.0, 0.0, 0.0)).norm(), 1e-14);
   EXPECT_LT((out.angular_velocity[0] - Vec3(0.0, 0.0, -gammadot / 2.0)).norm(), 1e-14);
   Mat3 e = Mat3::Zero();
@@ -105,7 +105,7 @@ TEST(ResistanceSolver, FreeSphereInWavyShearTakesTheFaxenVelocity) {
   const std::vector<double> radii{1.5};
   const double ly = 20.0, amp = 3.0, k = 2.0 * pi / ly, y = 4.0, a = 1.5;
   const Particles p = make_particles({Vec3(0.5, y, 1.0)}, {0}, radii);
-  const hydro::WavyShear flow{1.0, amp, 1, ly};
+  const AmbientFlow flow = AmbientFlow::wavy_shear(1.0, amp, 1, ly);
   ResistanceSolver solver(radii, tight());
   SolveResult out;
   solver.solve(p, {}, flow, {Vec3::Zero()}, {Vec3::Zero()}, out);
@@ -132,7 +132,7 @@ TEST_P(TwoSphereSqueeze, ApproachVelocityIsTheModelsTwoSphereValue) {
   ResistanceSolver solver(radii, params);
   const double f = 2.5;
   SolveResult out;
-  solver.solve(p, {make_pair(p, 0, 1)}, hydro::SimpleShear(0.0), {f * n, -f * n}, {Vec3::Zero(), Vec3::Zero()},
+  solver.solve(p, {make_pair(p, 0, 1)}, AmbientFlow::simple_shear(0.0), {f * n, -f * n}, {Vec3::Zero(), Vec3::Zero()},
                out);
 
   const hydro::TwoSphereOptions o = options_of(params.lubrication);
@@ -178,7 +178,7 @@ TEST(ResistanceSolver, SqueezeOfEqualSpheresMatchesTheExactTableUpToTheKnownRema
     ResistanceSolver solver(radii, params);
     const double f = 1.0;
     SolveResult out;
-    solver.solve(p, {make_pair(p, 0, 1)}, hydro::SimpleShear(0.0), {f * n, -f * n},
+    solver.solve(p, {make_pair(p, 0, 1)}, AmbientFlow::simple_shear(0.0), {f * n, -f * n},
                  {Vec3::Zero(), Vec3::Zero()}, out);
     const double approach = (out.velocity[0] - out.velocity[1]).dot(n);
     const double x11 = table_value(c.xi, 1.0, 0, 0), x12 = table_value(c.xi, 1.0, 1, 0);
@@ -210,7 +210,7 @@ TEST_P(TwoSphereShear, SlidingAndRollingMatchTheYAYBYCSystem) {
   ResistanceSolver solver(radii, params);
   const double f = 1.3, t = 0.7;
   SolveResult out;
-  solver.solve(p, {make_pair(p, 0, 1)}, hydro::SimpleShear(0.0), {Vec3(0, f, 0), Vec3(0, -f, 0)},
+  solver.solve(p, {make_pair(p, 0, 1)}, AmbientFlow::simple_shear(0.0), {Vec3(0, f, 0), Vec3(0, -f, 0)},
                {Vec3(0, 0, t), Vec3::Zero()}, out);
 
   const hydro::TwoSphereOptions o = options_of(params.lubrication);
@@ -257,7 +257,7 @@ TEST_P(CompressionalAxis, ForceFreeApproachVelocityIsTheXGOverXARatio) {
   ResistanceSolver solver(radii, params);
   SolveResult out;
   const std::vector<Vec3> zero(2, Vec3::Zero());
-  solver.solve(p, {make_pair(p, 0, 1)}, hydro::SimpleShear(gd), zero, zero, out);
+  solver.solve(p, {make_pair(p, 0, 1)}, AmbientFlow::simple_shear(gd), zero, zero, out);
 
   const hydro::TwoSphereOptions o = options_of(params.lubrication);
   const hydro::ResistanceScalars s = hydro::two_sphere_resistance(1.0, lambda, gap, o);
@@ -280,7 +280,7 @@ TEST_P(CompressionalAxis, ForceFreeApproachVelocityIsTheXGOverXARatio) {
   }
   // No tangential disturbance, rotation with the vorticity.
   for (int k = 0; k < 2; ++k) {
-    const Vec3 du = out.velocity[k] - hydro::SimpleShear(gd).velocity(p.position[k]);
+    const Vec3 du = out.velocity[k] - AmbientFlow::simple_shear(gd).velocity(p.position[k]);
     EXPECT_LT(du.cross(n).norm(), 1e-12);
     EXPECT_LT((out.angular_velocity[k] - Vec3(0, 0, -gd / 2)).norm(), 1e-12);
   }
@@ -301,7 +301,7 @@ TEST(ResistanceSolver, ForceFreeEqualSpheresApproachLinearlyInTheGap) {
     const Particles p = make_particles({Vec3(4, 6, 5), Vec3(4, 6, 5) + (2.0 + xi) * n}, {0, 0}, radii);
     SolveResult out;
     const std::vector<Vec3> zero(2, Vec3::Zero());
-    solver.solve(p, {make_pair(p, 0, 1)}, hydro::SimpleShear(1.0), zero, zero, out);
+    solver.solve(p, {make_pair(p, 0, 1)}, AmbientFlow::simple_shear(1.0), zero, zero, out);
     return (out.velocity[1] - out.velocity[0]).dot(n) / (-(2.0 + xi) / 2.0);
   };
   const double v1 = approach(1e-4), v2 = approach(5e-5);
@@ -351,7 +351,7 @@ Dense dense_configuration(std::size_t n, double gap_cutoff) {
 
 TEST(ResistanceSolver, ConjugateGradientAgreesWithCholeskyAndBalancesForces) {
   Dense d = dense_configuration(200, 0.3);
-  hydro::WavyShear flow{1.0, 0.5, 1, d.box.length().y()};
+  AmbientFlow flow = AmbientFlow::wavy_shear(1.0, 0.5, 1, d.box.length().y());
   ResistanceSolver chol(d.radii, tight(LinearSolver::cholesky));
   SolveResult a, b;
   chol.solve(d.p, d.pairs, flow, d.force, d.torque, b);
@@ -420,7 +420,7 @@ TEST(ResistanceSolver, ConjugateGradientAgreesWithCholeskyAndBalancesForces) {
 
 TEST(ResistanceSolver, StressletFormIsTheTracelessPairStresslet) {
   Dense d = dense_configuration(200, 0.3);
-  const hydro::SimpleShear flow(1.0);
+  const AmbientFlow flow = AmbientFlow::simple_shear(1.0);
   ResistanceSolverParams params = tight();
   params.lubrication_stress = LubricationStress::stresslet;
   ResistanceSolver traceless(d.radii, params);
@@ -437,7 +437,7 @@ TEST(ResistanceSolver, StressletFormIsTheTracelessPairStresslet) {
 
 TEST(ResistanceSolver, WarmStartReducesIterationsAndCholeskyReusesItsAnalysis) {
   Dense d = dense_configuration(200, 0.3);
-  const hydro::SimpleShear flow(1.0);
+  const AmbientFlow flow = AmbientFlow::simple_shear(1.0);
   ResistanceSolverParams cold_params;
   cold_params.warm_start = false;
   ResistanceSolver warm(d.radii, ResistanceSolverParams{}), cold(d.radii, cold_params);
@@ -472,7 +472,7 @@ TEST(ResistanceSolver, NonConvergenceThrowsNumericalErrorWithTheContext) {
   ResistanceSolver solver(d.radii, params);
   SolveResult out;
   try {
-    solver.solve(d.p, d.pairs, hydro::SimpleShear(1.0), d.force, d.torque, out, "step 42, strain 0.1");
+    solver.solve(d.p, d.pairs, AmbientFlow::simple_shear(1.0), d.force, d.torque, out, "step 42, strain 0.1");
     FAIL() << "expected NumericalError";
   } catch (const NumericalError& e) {
     const std::string what = e.what();
@@ -493,7 +493,7 @@ TEST(ResistanceSolver, RejectsInconsistentInput) {
   Particles p = make_particles({Vec3::Zero()}, {0}, {1.0});
   p.radius[0] = 1.2;
   SolveResult out;
-  EXPECT_THROW(solver.solve(p, {}, hydro::SimpleShear(1.0), {Vec3::Zero()}, {Vec3::Zero()}, out), InputError);
+  EXPECT_THROW(solver.solve(p, {}, AmbientFlow::simple_shear(1.0), {Vec3::Zero()}, {Vec3::Zero()}, out), InputError);
 }
 
 // A pair across the sheared y face of a Lees-Edwards box, found by the cell list, moves relative to its partner
@@ -521,7 +521,7 @@ TEST(ResistanceSolver, LeesEdwardsPairMatchesTheSamePairInsideTheBox) {
   const Particles inside = make_particles({Vec3(5.0, 3.0, 6.0), Vec3(5.0, 3.0, 6.0) + d}, {0, 1}, radii);
   const std::vector<Vec3> force{Vec3(0.3, -0.2, 0.5), Vec3(-0.3, 0.2, -0.5)}, torque{Vec3(0.1, 0.0, -0.2),
                                                                                        Vec3(0.0, 0.3, 0.0)};
-  hydro::WavyShear flow{gd, 0.0, 0, box.length().y()};
+  AmbientFlow flow = AmbientFlow::wavy_shear(gd, 0.0, 0, box.length().y());
   ResistanceSolver solver(radii, tight());
   SolveResult a, b;
   solver.solve(across, pairs, flow, force, torque, a);
@@ -560,7 +560,7 @@ TEST(ResistanceSolver, ResultIsBitIdenticalForAnyThreadCount) {
     d.torque.emplace_back(g(rng), g(rng), g(rng));
   }
   ASSERT_GT(d.pairs.size(), 1000u);
-  const hydro::SimpleShear flow(1.0);
+  const AmbientFlow flow = AmbientFlow::simple_shear(1.0);
   {  // block Jacobi: every threaded loop (the Gauss-Seidel path uses a subset of them)
     ResistanceSolverParams params;
     params.preconditioner = Preconditioner::block_jacobi;
@@ -609,7 +609,7 @@ TEST(ResistanceSolver, StressControlPartsShareOneMatrixAndEqualTwoSeparateSolves
   // and one preconditioner set-up; bit for bit what two solvers (one per part) give, over two steps.
   Dense d = dense_configuration(200, 0.3);
   const double ly = d.box.length().y();
-  const hydro::WavyShear unit{1.0, 0.0, 1, ly}, still{0.0, 0.0, 1, ly};
+  const AmbientFlow unit = AmbientFlow::wavy_shear(1.0, 0.0, 1, ly), still = AmbientFlow::wavy_shear(0.0, 0.0, 1, ly);
   const std::vector<Vec3> zero(d.p.size(), Vec3::Zero());
   ResistanceSolver shared(d.radii, ResistanceSolverParams{});
   ResistanceSolver rate_part(d.radii, ResistanceSolverParams{}), force_part(d.radii, ResistanceSolverParams{});

@@ -168,7 +168,7 @@ TEST(CouplingTwoSpheres, FreePairInShearMovesAsTheExactStrainFunctionsGive) {
       const std::vector<Vec3> pos{c - 0.5 * sp * n, c + 0.5 * sp * n};
       st.subgrid.assemble(pair_list(pos), {0, 0});
       CoupledResult r;
-      st.mobility.solve({.positions = pos, .radii = rad, .shear_rate = 1.0}, &st.subgrid, r);
+      st.mobility.solve({.positions = pos, .radii = rad, .flow = AmbientFlow::simple_shear(1.0)}, &st.subgrid, r);
       // Exact: R dV = R_FE : E for the force-free pair (dV relative to the ambient flow at each centre).
       const Vector12 dv = pair_resistance(1.0, 1.0, n, si, sj).ldlt().solve(
           pair_strain_forces(1.0, 1.0, n, si, sj, e, e));
@@ -196,7 +196,7 @@ TEST(CouplingTwoSpheres, ShearAndForcePartsAddUpToTheFullSolve) {
   st.subgrid.assemble(pair_list(pos), {0, 0});
   const std::vector<Vec3> f{Vec3(0.3, -1.0, 0.2), Vec3(-0.3, 1.0, -0.2)}, t{Vec3(0.1, 0.0, 0.4), Vec3::Zero()};
   const double gammadot = 0.7;
-  const CoupledProblem pb{.positions = pos, .radii = rad, .forces = f, .torques = t, .shear_rate = gammadot};
+  const CoupledProblem pb{.positions = pos, .radii = rad, .forces = f, .torques = t, .flow = AmbientFlow::simple_shear(gammadot)};
   CoupledResult full, shear, force;
   st.mobility.solve(pb, &st.subgrid, full);
   st.mobility.solve_parts(pb, &st.subgrid, shear, force);

@@ -47,12 +47,12 @@ TEST(FcmSuspensionViscosity, EinsteinCoefficientOfADiluteRandomSuspension) {
     for (int c = 0; c < configs; ++c) {
       const std::vector<Vec3> pos = random_spheres(n, l, 2.0, rng);
       const std::vector<double> rad(n, 1.0);
-      MobilityProblem pb{.positions = pos, .radii = rad, .shear_rate = 1.0};
+      MobilityProblem pb{.positions = pos, .radii = rad, .flow = AmbientFlow::simple_shear(1.0)};
       const std::vector<Mat3> zero(n, Mat3::Zero());
       pb.stresslet_guess = zero;
       const MobilityResult r = s.solve(pb);
       iterations += r.iterations;
-      eta += s.bulk_stress(r, 1.0)(0, 1) / configs;
+      eta += s.bulk_stress(r, AmbientFlow::simple_shear(1.0))(0, 1) / configs;
     }
     std::cout << "phi = " << phi << ": eta_eff = " << eta << ", (eta_eff - 1)/(2.5 phi) = " << (eta - 1.0) / (2.5 * phi)
               << ", mean CG iterations " << iterations / double(configs) << "\n";
