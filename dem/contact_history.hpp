@@ -1,7 +1,7 @@
 // O(N)-memory contact history (paper 000, section 2.1): per particle a bounded list of (partner, history), sorted
 // by partner index. Paper 000 reserves N x M slots; here the rows are packed one after the other (compressed rows,
-// offsets per particle), so the store holds only the pairs actually in contact: 4 B per particle plus 52 B per
-// contact (partner index, tangential and rolling stretch) instead of N x M x 64 B (6 KB per particle for the
+// offsets per particle), so the store holds only the pairs actually in contact: 4 B per particle plus 60 B per
+// contact (partner index, tangential and rolling stretch, normal state) instead of N x M x 64 B (6 KB per particle for the
 // a_2/a_1 = 3 suspension of paper 000 Table 3, M = 98). The buffers keep their capacity: no per-step allocation
 // once the largest contact count has been seen.
 //
@@ -64,9 +64,10 @@ class ContactHistory {
   void scatter(std::span<const NeighbourPair> pairs, std::span<const PairHistory> in);
 
  private:
-  // The stretches of a stored pair (in_contact is implied by being stored).
+  // The stretches and normal state of a stored pair (in_contact is implied by being stored).
   struct Stretch {
     Vec3 tangential, rolling;
+    double normal;
   };
   // The row of the lower index, the partner and whether the caller's order is swapped.
   struct Key {

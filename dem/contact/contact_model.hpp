@@ -10,7 +10,9 @@
 //   torques     (l_i n) x (-F_t) on i, (-l_j n) x F_t on j     (paper 000 eqs. 4d-4e, lever arms of paper 004 eq. 11);
 //   rolling     Rolling::apply with the same load (paper 000 Appendix B).
 // Contact ends when the normal law says so: the history is reset (xi(t_0) = 0 at the next contact). A model without
-// friction and rolling keeps no history at all.
+// friction, rolling or a normal law that keeps history keeps no history at all. A normal law with hysteresis (JKR)
+// declares `static constexpr bool keeps_history = true` and takes the pair history in apply(g, m, f, h), keeping
+// its state in h.normal_state.
 #pragma once
 #include <type_traits>
 
@@ -27,6 +29,10 @@
 
 namespace suspend {
 
+// A normal law whose force depends on the pair's past (NormalContact apply(g, m, f, PairHistory&)).
+template <class Normal>
+concept NormalWithHistory = Normal::keeps_history;
+
 template <class Normal, class Friction = NoFriction, class Rolling = NoRolling>
 struct ContactModel {
   using normal_type = Normal;
@@ -34,6 +40,7 @@ struct ContactModel {
   using rolling_type = Rolling;
   static constexpr bool has_friction = !std::is_same_v<Friction, NoFriction>;
   static constexpr bool has_rolling = !std::is_same_v<Rolling, NoRolling>;
+  static constexpr bool has_history = has_friction || has_rolling || NormalWithHistory<Normal>;
 
   Normal normal;
   Friction friction{};
@@ -48,8 +55,12 @@ struct ContactModel {
 
   PairForce operator()(const PairGeometry& g, const RelativeMotion& m, double dt, PairHistory& h) const {
     PairForce f;
-    const NormalContact c = normal.apply(g, m, f);
-    if (!c.active || !(has_friction || has_rolling)) {
+    NormalContact c;
+    if constexpr (NormalWithHistory<Normal>)
+      c = normal.apply(g, m, f, h);
+    else
+      c = normal.apply(g, m, f);
+    if (!c.active || !has_history) {
       h.reset();
       return f;
     }

@@ -4,6 +4,9 @@
 //    kept on the current tangent plane and capped at the Coulomb limit (force on j is -k_t xi).
 //  * rolling_stretch xi_r: the same for the rolling velocity u_r = a_ij n x (omega_i - omega_j).
 //  * in_contact: false once the pair separates; a new contact then starts from zero stretch (xi(t_0) = 0).
+//  * normal_state: what a normal law with hysteresis keeps (a law declaring `keeps_history`, contact_model.hpp;
+//    JKR: the contact radius of the neck, > 0 while the pair is bonded); 0 for the others. Carried by the contact
+//    store and checkpoints like the stretches; unchanged by the swap.
 // Orientation: stored for the ordered pair (i, j), d = r_j - r_i. Seen as (j, i) the tangential stretch changes
 // sign and the rolling stretch does not (u_r is symmetric under the swap); oriented_for_swap() applies this.
 // Units: lengths in a_1.
@@ -16,9 +19,10 @@ struct PairHistory {
   Vec3 tangential_stretch = Vec3::Zero();
   Vec3 rolling_stretch = Vec3::Zero();
   bool in_contact = false;
+  double normal_state = 0.0;
 
   void reset() { *this = PairHistory{}; }
-  PairHistory swapped() const { return {-tangential_stretch, rolling_stretch, in_contact}; }
+  PairHistory swapped() const { return {-tangential_stretch, rolling_stretch, in_contact, normal_state}; }
 };
 
 }  // namespace suspend
