@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "dem/contact/contact_model.hpp"
+#include "dem/contact/jkr_adhesion.hpp"
 #include "dem/contact/pair_geometry.hpp"
 #include "dem/contact/pair_history.hpp"
 #include "dem/contact/surface_forces.hpp"
@@ -30,7 +31,7 @@ template <class... T>
 struct TypeList {};
 
 // The registered sub-models: one line each.
-using NormalLaws = TypeList<SoftRepulsion, LinearSpringDashpot, HertzAdhesive>;
+using NormalLaws = TypeList<SoftRepulsion, LinearSpringDashpot, HertzAdhesive, JkrAdhesion>;
 using FrictionLaws = TypeList<NoFriction, CoulombFriction, CriticalLoadFriction>;
 using RollingLaws = TypeList<NoRolling, RollingResistance>;
 
