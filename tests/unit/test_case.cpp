@@ -86,7 +86,7 @@ TEST(Case, OutOfRangeNamesTheAllowedInterval) {
 
 TEST(Case, ChoiceListsAllowedWords) {
   const std::string e = error_of(base, {"contact.law=soft_repulsio"});
-  EXPECT_NE(e.find("contact.law: 'soft_repulsio' is not allowed (one of: soft_repulsion, linear_spring, hertz_adhesive)"),
+  EXPECT_NE(e.find("contact.law: 'soft_repulsio' is not allowed (one of: soft_repulsion, linear_spring, hertz_adhesive, jkr)"),
             std::string::npos)
       << e;
   EXPECT_NE(e.find("did you mean 'soft_repulsion'"), std::string::npos) << e;

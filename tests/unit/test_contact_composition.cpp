@@ -122,7 +122,7 @@ TEST(ContactComposition, CoulombWithZeroCoefficientIsNoFriction) {
 
 TEST(ContactComposition, EveryNormalFrictionAndRollingCombinationIsReachableFromACase) {
   std::set<std::size_t> alternatives;
-  for (const char* normal : {"soft_repulsion", "linear_spring", "hertz_adhesive"})
+  for (const char* normal : {"soft_repulsion", "linear_spring", "hertz_adhesive", "jkr"})
     for (const char* friction : {"none", "coulomb", "critical_load"})
       for (const bool rolling : {false, true}) {
         const std::string contact = std::string("{law: ") + normal + ", friction: " + friction +
