@@ -1,5 +1,6 @@
-// The generic pair driver (STYLE.md: pure law + generic driver). It owns the loop over interacting pairs, the
-// Lees-Edwards images, Newton's third law and the accumulation of forces, torques and stress by contribution.
+// The generic pair driver: the laws are pure functions of one pair, and this one driver owns the loop over
+// interacting pairs, the Lees-Edwards images, Newton's third law and the accumulation of forces, torques and
+// stress by contribution.
 //
 // Determinism: the pairs that interact are first compacted, in list order, to those within the exact interaction
 // range; work is then split over threads by position in that compact list and per-thread sums are reduced in

@@ -6,7 +6,7 @@
 // contribution and torques on i and j (pair_geometry.hpp), and updates the pair history in place (in_contact false
 // when the pair carries no history any more). A driver visits the variant once per step (with_law) and
 // loops over pairs inside, so the inner loop calls the concrete law directly: no virtual call,
-// no per-pair dispatch (STYLE.md habit 6).
+// no per-pair dispatch in the hot loop.
 //
 // A new law: its file (a struct with name, documentation, parameters, apply, energy, read and write, as
 // hertz_adhesive.hpp), one line in NormalLaws or FrictionLaws below, and its test. The case reader and writer
