@@ -37,12 +37,16 @@ class FlowProtocol {
   virtual double stress(const Flow& flow, double time, double accumulated_strain) const;
   // The largest |rate| (rate control) or |stress| (stress control) it imposes at any time.
   virtual double largest_target(const Flow& flow) const;
-  // Longest time step it allows (an oscillation: a fraction of the period).
-  virtual double max_time_step() const { return never; }
+  // Longest time step it allows at this time (an oscillation: a fraction of the period; a ramp while it rises).
+  virtual double max_time_step(double) const { return never; }
   // The first accumulated strain after `accumulated_strain`, and the first time after `time`, that a step must
-  // end on (a reversal, a stress step); `never` when none.
+  // end on (a reversal, a stress step, the end of a ramp); `never` when none. While a time event is ahead the
+  // target is still to change, so a flow that stops is not judged arrested (io/run_observers.cpp).
   virtual double next_event_strain(double) const { return never; }
   virtual double next_event_time(double) const { return never; }
+  // Series rows at least this often in time at this time (a ramp while it rises: rows where the strain hardly
+  // moves), besides the rows by strain; `never`: rows by strain (or period) only.
+  virtual double series_time_interval(double) const { return never; }
   // Period of a periodic protocol (series rows evenly in time); 0 otherwise.
   virtual double period() const { return 0.0; }
   // Whether run.strain, the averaging window and the output intervals count the signed strain (steady, creep)
@@ -70,7 +74,7 @@ struct Flow {
   double stress(double time, double accumulated_strain) const {
     return protocol->stress(*this, time, accumulated_strain);
   }
-  double max_time_step() const { return protocol->max_time_step(); }
+  double max_time_step(double time) const { return protocol->max_time_step(time); }
   double next_event_strain(double accumulated_strain) const { return protocol->next_event_strain(accumulated_strain); }
   double next_event_time(double time) const { return protocol->next_event_time(time); }
   double period() const { return protocol->period(); }

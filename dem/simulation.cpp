@@ -163,7 +163,7 @@ double Simulation::next_time_step(double max_speed) const {
   } else if (!ts.implicit_contacts) {
     dt = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt, 0.0, pair_rate(rate_));
   }
-  return std::min(dt, params_.flow.max_time_step());
+  return std::min(dt, params_.flow.max_time_step(state_.time));
 }
 
 void Simulation::evaluate() {
@@ -184,7 +184,7 @@ void Simulation::evaluate() {
     dt_ = overdamped_time_step(params_.time_step, params_.contact, state_.shear_rate,
                                max_nonaffine_speed(p, flow(state_.shear_rate)), a_min_, state_.last_dt,
                                contacts_.sums().mean_compliance(), pair_rate(state_.shear_rate));
-    dt_ = std::min(dt_, params_.flow.max_time_step());
+    dt_ = std::min(dt_, params_.flow.max_time_step(state_.time));
     implicit = {&contacts_.stiffness(), dt_};
   }
   // 3-4. Hydrodynamics and flow control (imposed rate now; imposed stress inside, from the model's two parts),
@@ -199,7 +199,7 @@ void Simulation::evaluate() {
     const double needed = std::min(
         overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, std::numeric_limits<double>::infinity(),
                              contacts_.sums().mean_compliance(), pair_rate(rate_)),
-        params_.flow.max_time_step());
+        params_.flow.max_time_step(state_.time));
     if (!(dt_ > step_overshoot * needed)) break;
     dt_ = needed;
     implicit.dt = dt_;

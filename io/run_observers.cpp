@@ -68,7 +68,11 @@ void SeriesWriter::evaluated(RunContext& r) {
   const Simulation& sim = r.sim;
   const double strain = r.strain();
   const double clock = by_time_ ? sim.state().time : strain;
-  if (!trigger_.due(clock)) return;
+  // A protocol's time rows: this step crossed a multiple of its interval (from the state alone, so a restart
+  // writes the same rows).
+  const double t = sim.state().time, every = r.c.simulation.flow.protocol->series_time_interval(t);
+  const bool time_row = every < FlowProtocol::never && std::floor(t / every) > std::floor((t - sim.state().last_dt) / every);
+  if (!trigger_.due(clock) && !time_row) return;
   SeriesRow row;
   row.step = sim.state().step;
   row.time = sim.state().time;
@@ -112,7 +116,10 @@ PaceGuard::PaceGuard(RunContext& r) : slow_start_strain_(r.strain()), slow_start
 std::optional<int> PaceGuard::advanced(RunContext& r) {
   constexpr int slow_steps_allowed = 1000;
   const double strain = r.strain(), end = r.c.run.strain;
-  if (std::abs(strain - r.step_start_strain) * max_run_steps >= end) {
+  // Slow steps while the protocol's target is still to change at a known time (a ramp rising from below the
+  // yield stress, a creep before its step) are what the protocol asked for.
+  const bool target_to_change = r.c.simulation.flow.next_event_time(r.sim.state().time) < FlowProtocol::never;
+  if (target_to_change || std::abs(strain - r.step_start_strain) * max_run_steps >= end) {
     slow_steps_ = 0;
     slow_start_strain_ = strain;
     slow_start_time_ = r.sim.state().time;
@@ -146,8 +153,9 @@ std::optional<int> JammingDetector::advanced(RunContext& r) {
   const Flow& flow = r.c.simulation.flow;
   const double window = r.c.run.jammed_strain * r.c.run.jammed_viscosity / flow.shear_stress;
   const SimulationState& st = r.sim.state();
-  // A window never spans a step of the protocol's target (creep from a level): it starts again after one.
-  if (flow.next_event_time(r.clock.jam_window_time) <= st.time) {
+  // A window never spans a change of the protocol's target still to come or just made (a creep's stress step, a
+  // ramp): it starts again once the target holds.
+  if (flow.next_event_time(r.clock.jam_window_time) < FlowProtocol::never) {
     r.clock.jam_window_time = st.time;
     r.clock.jam_window_strain = r.strain();
     return std::nullopt;

@@ -36,7 +36,7 @@ class Oscillatory : public Protocol {
     return stress_control ? stress_amplitude : strain_amplitude * angular_frequency;
   }
   double period() const override { return 2.0 * std::numbers::pi / angular_frequency; }
-  double max_time_step() const override { return period() / steps_per_cycle; }
+  double max_time_step(double) const override { return period() / steps_per_cycle; }
   bool counts_signed_strain() const override { return false; }
 
   void write(const Flow& flow, YAML::Node& keys) const override {
