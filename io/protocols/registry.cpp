@@ -5,7 +5,7 @@
 namespace suspend::io {
 
 namespace protocols_read {
-ProtocolRead simple_shear, wavy, oscillatory, reversal, creep;
+ProtocolRead simple_shear, wavy, oscillatory, reversal, creep, stress_ramp;
 }
 
 const std::vector<ProtocolEntry>& protocols() {
@@ -15,6 +15,7 @@ const std::vector<ProtocolEntry>& protocols() {
       {"oscillatory", protocols_read::oscillatory},
       {"reversal", protocols_read::reversal},
       {"creep", protocols_read::creep},
+      {"stress_ramp", protocols_read::stress_ramp},
   };
   return all;
 }
