@@ -43,7 +43,7 @@ TEST(FlowProtocol, OscillationImposesGammaZeroSinOmegaT) {
   for (double t : {0.0, 0.4, 1.3, 7.7}) EXPECT_DOUBLE_EQ(f.rate(t, 123.0), 0.6 * std::cos(2.0 * t));
   EXPECT_DOUBLE_EQ(f.period(), pi);
   EXPECT_TRUE(f.periodic());
-  EXPECT_DOUBLE_EQ(f.max_time_step(), pi / 400.0);
+  EXPECT_DOUBLE_EQ(f.max_time_step(0.0), pi / 400.0);
   EXPECT_EQ(f.next_event_strain(1.0), INFINITY);
   EXPECT_EQ(f.next_event_time(1.0), INFINITY);
   EXPECT_DOUBLE_EQ(f.progress_rate(-0.5), 0.5);  // an oscillation counts accumulated strain
@@ -61,7 +61,7 @@ TEST(FlowProtocol, ReversalFlipsTheDirectionAtEachGivenAccumulatedStrain) {
   EXPECT_DOUBLE_EQ(f.next_event_strain(0.0), 3.0);
   EXPECT_DOUBLE_EQ(f.next_event_strain(3.0), 5.0);
   EXPECT_EQ(f.next_event_strain(5.0), INFINITY);
-  EXPECT_EQ(f.max_time_step(), INFINITY);
+  EXPECT_EQ(f.max_time_step(0.0), INFINITY);
   EXPECT_FALSE(f.counts_signed_strain());
   const Flow s = read_flow("{type: reversal, control: stress, shear_stress: 5, reverse_at: 3}");
   EXPECT_DOUBLE_EQ(s.stress(9.0, 4.0), -5.0);
@@ -72,9 +72,28 @@ TEST(FlowProtocol, SteadyShearIsUnchangedAndCountsSignedStrain) {
   f.shear_rate = 1.5;
   EXPECT_DOUBLE_EQ(f.rate(10.0, 99.0), 1.5);
   EXPECT_DOUBLE_EQ(f.progress_rate(-0.5), -0.5);
-  EXPECT_EQ(f.max_time_step(), INFINITY);
+  EXPECT_EQ(f.max_time_step(0.0), INFINITY);
   EXPECT_FALSE(f.periodic());
   EXPECT_EQ(read_flow("{shear_rate: 1.5}").protocol_name(), "simple_shear");
+}
+
+TEST(FlowProtocol, CreepStepsAndARampRisesLinearlyThenHolds) {
+  const Flow c = read_flow("{type: creep, shear_stress: 2, initial_stress: 0.5, step_time: 3}");
+  EXPECT_EQ(c.control, FlowControl::stress);
+  EXPECT_DOUBLE_EQ(c.stress(2.9, 0.0), 0.5);
+  EXPECT_DOUBLE_EQ(c.stress(3.0, 0.0), 2.0);  // a step ends on t_1: the new stress holds from it
+  EXPECT_DOUBLE_EQ(c.next_event_time(1.0), 3.0);
+  EXPECT_EQ(c.next_event_time(3.0), INFINITY);
+  EXPECT_TRUE(c.counts_signed_strain());
+  const Flow r = read_flow("{type: stress_ramp, shear_stress: 3, initial_stress: 1, ramp_time: 10, bins: 4}");
+  EXPECT_DOUBLE_EQ(r.stress(0.0, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(r.stress(2.5, 0.0), 1.5);
+  EXPECT_DOUBLE_EQ(r.stress(12.0, 0.0), 3.0);
+  EXPECT_DOUBLE_EQ(r.max_time_step(5.0), 10.0 / 200.0);
+  EXPECT_EQ(r.max_time_step(10.0), INFINITY);
+  EXPECT_DOUBLE_EQ(r.next_event_time(5.0), 10.0);
+  EXPECT_DOUBLE_EQ(r.protocol->series_time_interval(5.0), 10.0 / 16.0);
+  EXPECT_EQ(r.protocol->series_time_interval(10.0), INFINITY);
 }
 
 TEST(FlowProtocol, ImpossibleSettingsNameTheirKey) {
