@@ -13,6 +13,7 @@
 #include "dem/integrate/pairwise_models.hpp"
 #include "dem/integrate/time_step_control.hpp"
 #include "io/contact_case.hpp"
+#include "io/hydrodynamic_models.hpp"
 #include "io/schema_reader.hpp"
 
 namespace suspend::io {
@@ -166,7 +167,7 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   }
   {
     SchemaReader h = top.child("hydrodynamics");
-    c.hydrodynamics = h.choice("model", "pairwise", {"pairwise", "fcm"});
+    c.hydrodynamics = h.choice("model", "pairwise", hydrodynamic_model_names());
     {  // read for either model, so one case file serves `suspend crossval`; used by model fcm only
       SchemaReader m = h.child("fcm");
       FcmParams& f = c.fcm;
@@ -258,7 +259,7 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     // Implicit contacts wherever the model has its overdamped solve (docs/overdamped.md 4b): the pairwise resistance
     // solve (lubrication enabled) or FCM's sub-grid pair terms.
     const bool can_be_implicit = c.simulation.integrator == Integrator::overdamped &&
-                                 (c.hydrodynamics == "fcm" ? c.fcm.subgrid : c.simulation.lubrication);
+                                 hydrodynamic_model(c.hydrodynamics).takes_implicit_contacts(c);
     ts.implicit_contacts =
         t.choice("contacts", can_be_implicit ? "implicit" : "explicit", {"explicit", "implicit"}) == "implicit";
     ts.bound = t.choice("bound", "pairs", {"pairs", "particles"}) == "particles" ? TimeStepParams::Bound::particles
@@ -287,10 +288,7 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   }
   top.finish();
   // The rules of the hydrodynamic model, where the model states them.
-  if (c.hydrodynamics == "fcm")
-    FcmModel::check(c.simulation, c.fcm);
-  else
-    check_pairwise_model(c.simulation);
+  hydrodynamic_model(c.hydrodynamics).check(c);
   refuse_runs_without_progress(c);
   return c;
 }
@@ -333,20 +331,9 @@ YAML::Node to_yaml(const Case& c) {
   YAML::Node flow_keys = n["flow"];
   c.protocol->write(fl, flow_keys);
   n["hydrodynamics"]["model"] = c.hydrodynamics;
-  if (c.hydrodynamics == "fcm") {
-    YAML::Node m = n["hydrodynamics"]["fcm"];
-    m["grid_spacing"] = number_node(c.fcm.grid_spacing);
-    m["truncation_widths"] = number_node(c.fcm.truncation_widths);
-    m["tolerance"] = number_node(c.fcm.krylov_tolerance);
-    m["max_iterations"] = c.fcm.max_iterations;
-    m["far_field_every"] = c.fcm.far_field_every;
-    m["predictor"] = c.fcm.lagged_predictor ? "lagged_far_field" : "extrapolated";
-    m["preconditioner_iterations"] = c.fcm.preconditioner_iterations;
-    m["lagged_cutoff"] = number_node(c.fcm.lagged_cutoff);
-    m["lagged_tolerance"] = number_node(c.fcm.lagged_tolerance);
-    m["subgrid"] = c.fcm.subgrid;
-    m["subgrid_cutoff"] = number_node(c.fcm.subgrid_cutoff);
-    m["cache_dir"] = c.fcm.cache_dir;
+  {
+    YAML::Node h = n["hydrodynamics"];
+    hydrodynamic_model(c.hydrodynamics).write(c, h);
   }
   {
     const ResistanceSolverParams& rs = c.simulation.resistance;

@@ -3,15 +3,14 @@
 #include <cstdio>
 
 #include "dem/hydro/exact_remainder.hpp"
+#include "io/hydrodynamic_models.hpp"
 
 namespace suspend::io {
 
 std::vector<std::string> exact_table_notes(const Case& c) {
   std::vector<std::string> notes;
-  const bool fcm = c.hydrodynamics == "fcm" && c.fcm.subgrid;
-  const bool pairwise = c.hydrodynamics == "pairwise" && c.simulation.lubrication &&
-                        c.simulation.resistance.lubrication.exact_relative;
-  if (!fcm && !pairwise) return notes;
+  const std::string user = hydrodynamic_model(c.hydrodynamics).exact_table_user(c);
+  if (user.empty()) return notes;
   const auto& species = c.particles.species;
   for (std::size_t s = 0; s < species.size(); ++s)
     for (std::size_t t = s; t < species.size(); ++t) {
@@ -22,7 +21,7 @@ std::vector<std::string> exact_table_notes(const Case& c) {
                     "species pair of radii %g and %g (lambda = %.6g): no exact two-sphere table (shipped for lambda = "
                     "%s); its %s keeps the singular lubrication terms",
                     species[s].radius, species[t].radius, lambda, hydro::ExactRemainder::shipped_ratios().c_str(),
-                    fcm ? "sub-grid correction" : "exact_relative lubrication");
+                    user.c_str());
       notes.emplace_back(line);
     }
   return notes;

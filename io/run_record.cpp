@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "core/version.hpp"
-#include "coupling/fcm_model.hpp"
+#include "io/hydrodynamic_models.hpp"
 #include "io/atomic_file.hpp"
 #include "io/summary.hpp"
 #include "io/xdmf.hpp"
@@ -115,11 +115,7 @@ nlohmann::json RunRecord::write_summary(double average_from, const nlohmann::jso
   summary["git_commit"] = std::string(suspend::git_commit);
   summary["threads"] = threads_;
   summary["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-  if (const auto* fcm = dynamic_cast<const FcmModel*>(&sim_.model())) {
-    const auto steps = fcm->evaluated_steps(), solves = fcm->total_stokes_solves();
-    summary["fcm"] = {{"steps", steps}, {"stokes_solves", solves},
-                      {"stokes_solves_per_step", steps > 0 ? static_cast<double>(solves) / steps : 0.0}};
-  }
+  hydrodynamic_model(case_.hydrodynamics).summarise(sim_, summary);
   write_text_atomically(summary_path_, summary.dump(2) + "\n");
   return summary;
 }

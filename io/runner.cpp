@@ -10,9 +10,9 @@
 #include <sstream>
 
 #include "core/error.hpp"
-#include "coupling/fcm_model.hpp"
 #include "io/atomic_file.hpp"
 #include "io/exact_tables.hpp"
+#include "io/hydrodynamic_models.hpp"
 #include "io/run_observers.hpp"
 #include "io/run_record.hpp"
 #include "io/run_start.hpp"
@@ -169,8 +169,7 @@ int run_case(const Case& c, const RunOptions& o) {
   if (progress_strain(flow, start.state) >= c.run.strain)
     throw InputError("run.strain = " + exact(c.run.strain) + " is already reached by the checkpoint (strain " +
                      exact(progress_strain(flow, start.state)) + "); raise it with --set run.strain=...");
-  Simulation sim = c.hydrodynamics == "fcm" ? fcm_simulation(std::move(start.state), start.box, c.simulation, c.fcm)
-                                             : Simulation(std::move(start.state), start.box, c.simulation);
+  Simulation sim = hydrodynamic_model(c.hydrodynamics).build(std::move(start.state), start.box, c);
   {
     std::error_code ec;
     fs::create_directories(dir, ec);
