@@ -85,16 +85,7 @@ class Creep : public Protocol {
 namespace protocols_read {
 std::shared_ptr<const Protocol> creep(ProtocolKeys& k) {
   SchemaReader& f = k.keys;
-  Flow& fl = k.flow;
-  f.choice("control", "stress", {"stress"});
-  fl.control = FlowControl::stress;
-  fl.shear_rate = f.number("shear_rate", 1.0, Range::positive());
-  if (f.has("sigma_star") && f.has("shear_stress"))
-    f.fail("sigma_star", "give either shear_stress or sigma_star (adhesive laws), not both");
-  if (f.has("sigma_star"))
-    k.sigma_star = f.number("sigma_star", Range::positive());
-  else
-    fl.shear_stress = f.number("shear_stress", Range::positive());
+  read_stress_protocol_levels(k);
   auto p = std::make_shared<Creep>();
   p->initial_stress = f.number("initial_stress", 0.0, Range::non_negative());
   p->step_time = f.number("step_time", 0.0, Range::non_negative());

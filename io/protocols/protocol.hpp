@@ -64,5 +64,10 @@ std::shared_ptr<const Protocol> simple_shear_protocol();
 // under stress control, flow.shear_stress or flow.sigma_star. `stress_allowed` false: control = stress is refused
 // with `why`.
 void read_steady_levels(ProtocolKeys& k, bool stress_allowed = true, const std::string& why = "");
+// Sigma_xy's level: flow.shear_stress, or flow.sigma_star for adhesive laws (not both).
+void read_stress_level(ProtocolKeys& k);
+// The keys of a protocol that imposes a stress only (creep, ramp): flow.control (stress), flow.shear_rate (the first
+// step's guess) and the stress level.
+void read_stress_protocol_levels(ProtocolKeys& k);
 
 }  // namespace suspend::io

@@ -12,34 +12,19 @@
 #include "io/run_file.hpp"
 
 #include "tests/integration/cli_support.hpp"
+#include "tests/integration/dilute_case.hpp"
 
 using namespace suspend::test;
 using json = nlohmann::json;
 
 namespace {
-// Dilute (phi 0.05): no contacts engage, lubrication pairs are rare.
-std::string dilute_case(const std::string& model, double box) {
-  return "particles: {phi: 0.05}\nbox: {cube: " + std::to_string(box) +
-         "}\nhydrodynamics: {model: " + model +
-         ", lubrication: {enabled: true, inner_cutoff: 1.0e-3, outer_cutoff: 0.25}, fcm: {grid_spacing: 0.5}}\n"
-         "contact: {law: soft_repulsion, k_hat: 1.0e4}\nrun: {seed: 4}\n";
-}
-
-json run_summary(const std::string& case_file, const std::string& out, const std::vector<std::string>& sets) {
-  std::vector<std::string> args = {"run", case_file, "--out", out, "--threads", "1", "--quiet"};
-  for (const std::string& s : sets) args.insert(args.end(), {"--set", s});
-  const Result r = run(args);
-  EXPECT_EQ(r.code, 0) << r.err;
-  return json::parse(read_text(out + "/summary.json"));
-}
-
 void expect_creep_viscosity_is_the_steady_one(const std::string& model, double box) {
   const std::string c = write_case("creep_dilute_" + model + ".yaml", dilute_case(model, box));
   const std::vector<std::string> window = {"run.strain=0.2", "run.average_from=0.05"};
-  const double steady = run_summary(c, fresh_dir("steady_" + model), window)["eta_r"]["mean"];
+  const double steady = run_summary_in(c, fresh_dir("steady_" + model), window)["eta_r"]["mean"];
   std::vector<std::string> creep = window;
   creep.insert(creep.end(), {"flow.type=creep", "flow.shear_stress=1", "flow.shear_rate=null"});
-  const json s = run_summary(c, fresh_dir("creep_" + model), creep);
+  const json s = run_summary_in(c, fresh_dir("creep_" + model), creep);
   const json& b = s["creep"];
   const double eta = b["eta_r"]["mean"];
   std::cout << model << ": creep eta_r " << eta << ", steady eta_r " << steady << "\n";
@@ -63,7 +48,7 @@ TEST(Creep, DiluteCreepViscosityIsTheSteadyOneWithFcm) { expect_creep_viscosity_
 TEST(Creep, FromALevelTheStressStepsAtStepTime) {
   const std::string c = write_case("creep_level.yaml", dilute_case("pairwise", 12));
   const std::string out = fresh_dir("creep_level");
-  const json s = run_summary(c, out,
+  const json s = run_summary_in(c, out,
                              {"flow.type=creep", "flow.shear_stress=1", "flow.initial_stress=0.4",
                               "flow.step_time=0.15", "run.strain=0.3", "run.average_from=0.25"});
   suspend::io::h5::File f = suspend::io::h5::File::open(out + "/run.h5", false);

@@ -14,27 +14,14 @@
 #include "io/run_file.hpp"
 
 #include "tests/integration/cli_support.hpp"
+#include "tests/integration/dilute_case.hpp"
 
 using namespace suspend::test;
 using json = nlohmann::json;
 
 namespace {
-// Dilute (phi 0.05): no contacts engage, lubrication pairs are rare; Einstein's 1 + 2.5 phi plus the O(phi^2) the
-// model carries.
-std::string dilute_case(const std::string& model, double box) {
-  return "particles: {phi: 0.05}\nbox: {cube: " + std::to_string(box) +
-         "}\nhydrodynamics: {model: " + model +
-         ", lubrication: {enabled: true, inner_cutoff: 1.0e-3, outer_cutoff: 0.25}, fcm: {grid_spacing: 0.5}}\n"
-         "contact: {law: soft_repulsion, k_hat: 1.0e4}\nrun: {seed: 4, output: {checkpoint_every: 100}}\n";
-}
-
 json run_summary(const std::string& case_file, const std::string& name, const std::vector<std::string>& sets) {
-  const std::string out = fresh_dir(name);
-  std::vector<std::string> args = {"run", case_file, "--out", out, "--threads", "1", "--quiet"};
-  for (const std::string& s : sets) args.insert(args.end(), {"--set", s});
-  const Result r = run(args);
-  EXPECT_EQ(r.code, 0) << r.err;
-  return json::parse(read_text(out + "/summary.json"));
+  return run_summary_in(case_file, fresh_dir(name), sets);
 }
 
 // eta' of a dilute case equals its steady eta_r within 3%, |eta''| < 2% of eta', under rate and stress control.
