@@ -1,6 +1,6 @@
 // A flow protocol as the input/output side sees it: the engine's FlowProtocol (core/flow.hpp) plus its entry in
 // the resolved case and its block in summary.json. A protocol is one file in this folder that defines its class and
-// a reader of its flow.* keys, registered by one line in registry.cpp (docs/architecture.md, "Adding a protocol").
+// a reader of its flow.* keys, registered by one line in registry.cpp (docs/architecture.md, "Add a flow protocol").
 #pragma once
 #include <yaml-cpp/yaml.h>
 

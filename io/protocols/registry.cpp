@@ -1,5 +1,5 @@
 // The flow protocols a case can name (flow.type): one line each. A new protocol is one file in this folder that
-// defines its reader, plus its line here (docs/architecture.md, "Adding a protocol").
+// defines its reader, plus its line here (docs/architecture.md, "Add a flow protocol").
 #include "io/protocols/protocol.hpp"
 
 namespace suspend::io {
