@@ -89,7 +89,8 @@ void BM_ConjugateGradientCold(benchmark::State& state) {
   params.warm_start = false;
   ResistanceSolver solver(c.species_radius, params);
   SolveResult out;
-  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
+  const AmbientFlow unit_shear = AmbientFlow::simple_shear(1.0);
+  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, unit_shear, c.force, c.torque, out);
   report(state, c, out);
 }
 
@@ -128,7 +129,8 @@ void BM_AssemblyAndStress(benchmark::State& state) {
   ResistanceSolver solver(c.species_radius, {});
   SolveResult out;
   solver.solve(c.current.p, c.current.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
-  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
+  const AmbientFlow unit_shear = AmbientFlow::simple_shear(1.0);
+  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, unit_shear, c.force, c.torque, out);
   report(state, c, out);
 }
 
@@ -139,7 +141,8 @@ void BM_CholeskyPatternReused(benchmark::State& state) {
   ResistanceSolver solver(c.species_radius, params);
   SolveResult out;
   solver.solve(c.previous.p, c.previous.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
-  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, AmbientFlow::simple_shear(1.0), c.force, c.torque, out);
+  const AmbientFlow unit_shear = AmbientFlow::simple_shear(1.0);
+  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, unit_shear, c.force, c.torque, out);
   report(state, c, out);
   state.counters["analyses"] = solver.pattern_analyses();
 }

@@ -1,9 +1,9 @@
 // O(N)-memory contact history (paper 000, section 2.1): per particle a bounded list of (partner, history), sorted
 // by partner index. Paper 000 reserves N x M slots; here the rows are packed one after the other (compressed rows,
 // offsets per particle), so the store holds only the pairs actually in contact: 4 B per particle plus 60 B per
-// contact (partner index, tangential and rolling stretch, normal state) instead of N x M x 64 B (6 KB per particle for the
-// a_2/a_1 = 3 suspension of paper 000 Table 3, M = 98). The buffers keep their capacity: no per-step allocation
-// once the largest contact count has been seen.
+// contact (partner index, tangential and rolling stretch, normal state) instead of N x M x 64 B (6 KB per particle
+// for the a_2/a_1 = 3 suspension of paper 000 Table 3, M = 98). The buffers keep their capacity: no per-step
+// allocation once the largest contact count has been seen.
 //
 // A pair (i, j) is stored once, in the row of min(i, j), with its history oriented for (min, max); lookups for
 // (max, min) return PairHistory::swapped(), so a pair listed in either order sees the same physical stretch.

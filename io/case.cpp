@@ -158,9 +158,9 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
   {
     SchemaReader f = top.child("flow");
     SimulationParams& s = c.simulation;
-    c.flow = f.choice("type", "simple_shear", protocol_types());
+    const std::string type = f.choice("type", "simple_shear", protocol_types());
     ProtocolKeys keys{f, s.flow, sigma_star};
-    c.protocol = read_protocol(c.flow, keys);
+    c.protocol = read_protocol(type, keys);
     s.flow.protocol = c.protocol;
     s.flow.validate();
     f.finish();
@@ -326,7 +326,7 @@ YAML::Node to_yaml(const Case& c) {
     n["box"]["length"]["z"] = number_node(c.box->z());
   }
   const Flow& fl = c.simulation.flow;
-  n["flow"]["type"] = c.flow;
+  n["flow"]["type"] = c.protocol->name();
   n["flow"]["control"] = fl.control == FlowControl::stress ? "stress" : "rate";
   YAML::Node flow_keys = n["flow"];
   c.protocol->write(fl, flow_keys);

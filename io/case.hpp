@@ -52,8 +52,8 @@ struct Case {
   std::vector<std::string> overrides;  // the --set assignments applied to it (to print a restart command)
   ParticlesCase particles;
   std::optional<Vec3> box;  // given box, else derived from count and phi
-  std::string flow = "simple_shear";  // flow.type
-  // The flow's protocol with its input/output side (the same object as simulation.flow.protocol).
+  // The flow's protocol (flow.type: its name) with its input/output side (the same object as
+  // simulation.flow.protocol).
   std::shared_ptr<const Protocol> protocol = simple_shear_protocol();
   std::string hydrodynamics = "pairwise";  // "pairwise" or "fcm"
   SimulationParams simulation;

@@ -15,7 +15,9 @@ const HydrodynamicModelEntry pairwise{
     [](const Case& c) { return c.simulation.lubrication; },
     [](const Case& c) { check_pairwise_model(c.simulation); },
     [](const Case&, YAML::Node&) {},
-    [](SimulationState state, const Box& box, const Case& c) { return Simulation(std::move(state), box, c.simulation); },
+    [](SimulationState state, const Box& box, const Case& c) {
+      return Simulation(std::move(state), box, c.simulation);
+    },
     [](const Simulation&, nlohmann::json&) {},
     [](const Case& c) {
       return c.simulation.lubrication && c.simulation.resistance.lubrication.exact_relative

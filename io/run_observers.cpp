@@ -71,7 +71,8 @@ void SeriesWriter::evaluated(RunContext& r) {
   // A protocol's time rows: this step crossed a multiple of its interval (from the state alone, so a restart
   // writes the same rows).
   const double t = sim.state().time, every = r.c.simulation.flow.protocol->series_time_interval(t);
-  const bool time_row = every < FlowProtocol::never && std::floor(t / every) > std::floor((t - sim.state().last_dt) / every);
+  const bool time_row =
+      every < FlowProtocol::never && std::floor(t / every) > std::floor((t - sim.state().last_dt) / every);
   if (!trigger_.due(clock) && !time_row) return;
   SeriesRow row;
   row.step = sim.state().step;

@@ -29,9 +29,5 @@ nlohmann::json summarize(hid_t run_file, const SummaryContext& context);
 
 // {"mean", "sem"} of a window mean.
 nlohmann::json summary_entry(const MeanWithError& m);
-// eta_r, N1, N2, Pi of one stress series (columns xx yy zz xy xz yz) over the window rows. mean_rate null: each row
-// divided by its own shear rate (imposed rate); else the window means divided by *mean_rate, its error propagated.
-nlohmann::json stress_observables(hid_t f, const std::string& series, const std::vector<double>& rate,
-                                  const std::vector<std::size_t>& window, const MeanWithError* mean_rate);
 
 }  // namespace suspend::io

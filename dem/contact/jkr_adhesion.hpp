@@ -56,7 +56,8 @@ class JkrAdhesion {
   static constexpr double max_reduced_radius = 5.0;  // R* the neighbour range covers
 
   JkrAdhesion() : JkrAdhesion(JkrParams{}) {}
-  explicit JkrAdhesion(const JkrParams& p) : p_(p), c_(std::sqrt(2.0 * std::numbers::pi * p.work_of_adhesion / p.modulus)) {
+  explicit JkrAdhesion(const JkrParams& p)
+      : p_(p), c_(std::sqrt(2.0 * std::numbers::pi * p.work_of_adhesion / p.modulus)) {
     p_.validate();
   }
   const JkrParams& params() const { return p_; }
@@ -73,10 +74,9 @@ class JkrAdhesion {
   }
   // The stable root a(delta) of a bonded pair (delta >= snap_overlap(r)).
   double contact_radius(double delta, double r) const {
-    // x = sqrt(a): f(x) = x^4 / r - c x - delta; start where x^4 / r >= 2 c x and >= 2 delta (so f >= 0), and right
-    // of the turning point x_s^3 = c r / 4.
-    double x = std::max({std::cbrt(2.0 * r * c_), std::sqrt(std::sqrt(2.0 * r * std::max(delta, 0.0))),
-                         std::cbrt(0.25 * c_ * r)});
+    // x = sqrt(a): f(x) = x^4 / r - c x - delta; start where x^4 / r >= 2 c x and >= 2 delta (so f >= 0), which is
+    // also right of the turning point x_s^3 = c r / 4.
+    double x = std::max(std::cbrt(2.0 * r * c_), std::sqrt(std::sqrt(2.0 * r * std::max(delta, 0.0))));
     for (int k = 0; k < 200; ++k) {
       const double f = x * x * x * x / r - c_ * x - delta, slope = 4.0 * x * x * x / r - c_;
       if (!(slope > 0.0)) break;
@@ -94,7 +94,7 @@ class JkrAdhesion {
   double adhesion_force() const { return pull_off_force(0.5); }
 
   NormalContact apply(const PairGeometry& g, const RelativeMotion&, PairForce& f, PairHistory& h) const {
-    const double r = g.a_i * g.a_j / (g.a_i + g.a_j);
+    const double r = 0.5 * g.harmonic_radius();  // R*
     const double delta = -g.gap();
     const bool bonded = h.normal_state > 0.0;
     if (!(delta >= (bonded ? snap_overlap(r) : 0.0))) {
@@ -118,7 +118,7 @@ class JkrAdhesion {
   }
 
   double energy(const PairGeometry& g) const {
-    const double r = g.a_i * g.a_j / (g.a_i + g.a_j), delta = -g.gap();
+    const double r = 0.5 * g.harmonic_radius(), delta = -g.gap();
     if (!(delta >= snap_overlap(r))) return 0.0;
     const double a = contact_radius(delta, r), e = p_.modulus;
     return 8.0 * e * std::pow(a, 5) / (15.0 * r * r) - 4.0 / 3.0 * e * c_ * std::pow(a, 3.5) / r +

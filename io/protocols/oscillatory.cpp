@@ -5,12 +5,13 @@
 // by the rate amplitude (docs/flow.md).
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "core/range.hpp"
+#include "core/stress.hpp"
 #include "io/oscillatory_response.hpp"
 #include "io/protocols/protocol.hpp"
 #include "io/run_file.hpp"
-#include "io/summary.hpp"
 
 namespace suspend::io {
 
@@ -50,20 +51,19 @@ class Oscillatory : public Protocol {
     keys["steps_per_cycle"] = steps_per_cycle;
   }
 
+  std::optional<MeanWithError> rate_scale(const SummaryInputs& in) const override {
+    return MeanWithError{response(in, cycles_of(in), "stress/total").strain_amplitude * angular_frequency, 0.0};
+  }
+
   void summarise(const SummaryInputs& in, nlohmann::json& j) const override {
-    const std::vector<double> t = read_series(in.file, "time");
-    const double from_time = in.window.empty() ? (t.empty() ? 0.0 : t.back()) : t[in.window.front()];
+    const Cycles w = cycles_of(in);
     const double omega = angular_frequency;
-    auto of = [&](const std::string& series) {
-      return oscillatory_response(t, read_series(in.file, series, 3), in.rate, omega, from_time, stress_control);
-    };
-    const OscillatoryResponse total = of("stress/total");
-    const MeanWithError rate_amplitude{total.strain_amplitude * omega, 0.0};
+    const OscillatoryResponse total = response(in, w, "stress/total");
     nlohmann::json o;
     o["angular_frequency"] = omega;
     o["period"] = period();
     o["cycles"] = total.cycles;
-    o["from_time"] = from_time;
+    o["from_time"] = w.from_time;
     auto both = [](const OscillatoryResponse& r) {
       return nlohmann::json{
           {"eta_prime", {{"mean", optional_number(r.eta_prime.mean)}, {"sem", optional_number(r.eta_prime.sem)}}},
@@ -80,22 +80,32 @@ class Oscillatory : public Protocol {
                       {"I5_I1", optional_number(total.harmonics[1])},
                       {"I7_I1", optional_number(total.harmonics[2])}};
     for (auto name : contribution_names)
-      o["contributions"][std::string(name)] = both(of("stress/" + std::string(name)));
+      o["contributions"][std::string(name)] = both(response(in, w, "stress/" + std::string(name)));
 
-    // N1, N2, Pi over the rate amplitude; eta_r is eta'.
+    // N1, N2, Pi are over the rate amplitude (rate_scale); eta_r is eta'.
     j["note"] =
         "oscillatory shear: eta_r is eta' (io/oscillatory_response.hpp); N1, N2, Pi are window means divided by "
         "eta_0 times the shear-rate amplitude";
-    const nlohmann::json total_observables =
-        stress_observables(in.file, "stress/total", in.rate, in.window, &rate_amplitude);
-    for (const auto& [k, v] : total_observables.items()) j[k] = v;
-    for (auto name : contribution_names)
-      j["contributions"][std::string(name)] =
-          stress_observables(in.file, "stress/" + std::string(name), in.rate, in.window, &rate_amplitude);
     j["eta_r"] = o["eta_prime"];
     for (auto name : contribution_names)
       j["contributions"][std::string(name)]["eta_r"] = o["contributions"][std::string(name)]["eta_prime"];
     j["oscillatory"] = o;
+  }
+
+ private:
+  // The whole cycles analysed: the series' time column and the time the window starts at.
+  struct Cycles {
+    std::vector<double> t;
+    double from_time;
+  };
+  Cycles cycles_of(const SummaryInputs& in) const {
+    std::vector<double> t = read_series(in.file, "time");
+    const double from = in.window.empty() ? (t.empty() ? 0.0 : t.back()) : t[in.window.front()];
+    return {std::move(t), from};
+  }
+  OscillatoryResponse response(const SummaryInputs& in, const Cycles& w, const std::string& series) const {
+    return oscillatory_response(w.t, read_series(in.file, series, 3), in.rate, angular_frequency, w.from_time,
+                                stress_control);
   }
 };
 }  // namespace
@@ -120,8 +130,7 @@ std::shared_ptr<const Protocol> oscillatory(ProtocolKeys& k) {
                     "stress_amplitude");
     p->stress_amplitude = f.number("stress_amplitude", Range::positive());
   } else {
-    for (const char* key : {"shear_stress", "sigma_star", "stress_amplitude"})
-      if (f.has(key)) f.fail(key, "is a target of flow.control = stress; with control = rate give shear_rate only");
+    refuse_stress_targets(f);
     p->strain_amplitude = f.number("strain_amplitude", Range::positive());
   }
   return p;

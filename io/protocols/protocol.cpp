@@ -9,6 +9,11 @@ void Protocol::write(const Flow& flow, YAML::Node& keys) const {
   if (flow.control == FlowControl::stress) keys["shear_stress"] = number_node(flow.shear_stress);
 }
 
+void refuse_stress_targets(SchemaReader& f) {
+  for (const char* key : {"shear_stress", "sigma_star", "stress_amplitude"})
+    if (f.has(key)) f.fail(key, "is a target of flow.control = stress; with control = rate give shear_rate only");
+}
+
 void read_stress_level(ProtocolKeys& k) {
   SchemaReader& f = k.keys;
   if (f.has("sigma_star") && f.has("shear_stress"))
@@ -35,8 +40,7 @@ void read_steady_levels(ProtocolKeys& k, bool stress_allowed, const std::string&
     read_stress_level(k);
     if (!stress_allowed) f.fail("control", why);
   } else {
-    for (const char* key : {"shear_stress", "sigma_star", "stress_amplitude"})
-      if (f.has(key)) f.fail(key, "is a target of flow.control = stress; with control = rate give shear_rate only");
+    refuse_stress_targets(f);
   }
 }
 

@@ -13,6 +13,7 @@
 #include "core/flow.hpp"
 #include "io/hdf5.hpp"
 #include "io/schema_reader.hpp"
+#include "io/statistics.hpp"
 
 namespace suspend::io {
 
@@ -33,6 +34,9 @@ class Protocol : public FlowProtocol {
   // Its keys in the resolved case (`suspend check`, run.h5), beside flow.type and flow.control. The default
   // writes flow.shear_rate and, under stress control, flow.shear_stress.
   virtual void write(const Flow& flow, YAML::Node& keys) const;
+  // What eta_r, N1, N2 and Pi are divided by, when it is neither each row's imposed rate (rate control) nor the
+  // window's mean rate (stress control): an oscillation's rate amplitude.
+  virtual std::optional<MeanWithError> rate_scale(const SummaryInputs&) const { return std::nullopt; }
   // Adds or replaces entries of summary.json (an oscillation's eta', a reversal's transients, a creep's J(t)).
   virtual void summarise(const SummaryInputs&, nlohmann::json&) const {}
 };
@@ -64,6 +68,8 @@ std::shared_ptr<const Protocol> simple_shear_protocol();
 // under stress control, flow.shear_stress or flow.sigma_star. `stress_allowed` false: control = stress is refused
 // with `why`.
 void read_steady_levels(ProtocolKeys& k, bool stress_allowed = true, const std::string& why = "");
+// Under rate control: refuses the stress targets (shear_stress, sigma_star, stress_amplitude) naming the key.
+void refuse_stress_targets(SchemaReader& keys);
 // Sigma_xy's level: flow.shear_stress, or flow.sigma_star for adhesive laws (not both).
 void read_stress_level(ProtocolKeys& k);
 // The keys of a protocol that imposes a stress only (creep, ramp): flow.control (stress), flow.shear_rate (the first

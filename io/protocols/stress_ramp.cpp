@@ -1,12 +1,12 @@
 // Stress ramp (flow.type stress_ramp): Sigma_xy rises linearly from initial_stress S_0 (default 0) at t = 0 to
 // shear_stress S_1 at ramp_time T, then holds at S_1; steps are at most T / steps_per_ramp while it rises and one
-// ends on T; series rows come at least 4 per bin of stress in time while it rises. It reads a flow curve, and the stress at which a sample at rest starts to flow, in one run. While the
-// stress rises, a sample that does not move is not judged arrested (the target is still to change); once it holds,
-// run.jammed applies as under steady stress. summary.json gains `ramp`: over bins_count equal bins of stress
-// during the rise, the mean stress, mean shear rate and apparent viscosity Sigma_xy / gammadot of the rows in each
-// bin, and `flow_onset_stress`, the first bin's stress whose viscosity falls below onset_viscosity (the flow
-// curve's departure from arrest: a static yield stress as a ramp sees it, which depends on the ramp's rate).
-// docs/flow.md.
+// ends on T; series rows come at least 4 per bin of stress in time while it rises. It reads a flow curve, and the
+// stress at which a sample at rest starts to flow, in one run. While the stress rises, a sample that does not move
+// is not judged arrested (the target is still to change); once it holds, run.jammed applies as under steady
+// stress. summary.json gains `ramp`: over `bins` equal bins of stress during the rise, the mean stress, mean shear
+// rate and apparent viscosity Sigma_xy / gammadot of the rows in each bin, and `flow_onset_stress`, the first bin's
+// stress whose viscosity falls below onset_viscosity (the flow curve's departure from arrest: a static yield stress
+// as a ramp sees it, which depends on the ramp's rate). docs/flow.md.
 #include <algorithm>
 #include <cmath>
 
@@ -33,7 +33,8 @@ class StressRamp : public Protocol {
       throw InputError("flow.shear_stress must exceed flow.initial_stress: a ramp rises from one to the other");
   }
   double stress(const Flow& flow, double time, double) const override {
-    return rising(time) ? initial_stress + (flow.shear_stress - initial_stress) * (time / ramp_time) : flow.shear_stress;
+    if (!rising(time)) return flow.shear_stress;
+    return initial_stress + (flow.shear_stress - initial_stress) * (time / ramp_time);
   }
   double largest_target(const Flow& flow) const override { return flow.shear_stress; }
   double max_time_step(double time) const override { return rising(time) ? ramp_time / steps_per_ramp : never; }

@@ -196,7 +196,8 @@ TEST(CouplingTwoSpheres, ShearAndForcePartsAddUpToTheFullSolve) {
   st.subgrid.assemble(pair_list(pos), {0, 0});
   const std::vector<Vec3> f{Vec3(0.3, -1.0, 0.2), Vec3(-0.3, 1.0, -0.2)}, t{Vec3(0.1, 0.0, 0.4), Vec3::Zero()};
   const double gammadot = 0.7;
-  const CoupledProblem pb{.positions = pos, .radii = rad, .forces = f, .torques = t, .flow = AmbientFlow::simple_shear(gammadot)};
+  const CoupledProblem pb{
+      .positions = pos, .radii = rad, .forces = f, .torques = t, .flow = AmbientFlow::simple_shear(gammadot)};
   CoupledResult full, shear, force;
   st.mobility.solve(pb, &st.subgrid, full);
   st.mobility.solve_parts(pb, &st.subgrid, shear, force);
