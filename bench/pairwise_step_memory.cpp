@@ -96,7 +96,8 @@ int step(const std::string& file, int steps, const std::string& integrator, cons
 
   SimulationParams params;
   ComposedLaw<LinearSpringCoulomb> law;
-  law.contact.normal.p = {4.0e5, 2.0 / 7.0 * 4.0e5, 1.0e-7 * 4.0e5};
+  law.contact.normal.p = {4.0e5};
+  law.contact.damping = NormalDamping::viscous(1.0e-7 * 4.0e5);
   law.contact.friction.p.mu = 1.0;
   if (surface == "surface") {
     ElectrostaticRepulsionParams repulsion;  // F_ER = 1 (gamma-hat = 1), lambda_D = 0.02, cut at 20 lambda_D

@@ -51,8 +51,7 @@ PairHistory ContactHistory::lookup(std::uint32_t i, std::uint32_t j) const {
   const Key k = key(i, j);
   const std::ptrdiff_t s = find(k);
   if (s < 0) return {};
-  const Stretch& h = stretch_[s];
-  return {k.swapped ? Vec3(-h.tangential) : h.tangential, h.rolling, true, h.normal};
+  return stretch_[s].history(k.swapped);
 }
 
 bool ContactHistory::contains(std::uint32_t i, std::uint32_t j) const { return find(key(i, j)) >= 0; }
@@ -63,8 +62,7 @@ void ContactHistory::store(std::uint32_t i, std::uint32_t j, const PairHistory& 
     return;
   }
   const Key k = key(i, j);
-  const PairHistory oriented = k.swapped ? h.swapped() : h;
-  const Stretch value{oriented.tangential_stretch, oriented.rolling_stretch, oriented.normal_state};
+  const Stretch value = Stretch::of(h, k.swapped);
   const std::ptrdiff_t s = find(k);
   if (s >= 0) {
     stretch_[s] = value;
@@ -99,7 +97,7 @@ std::vector<ContactHistory::Entry> ContactHistory::entries() const {
   out.reserve(size());
   for (std::uint32_t row = 0; row < particles(); ++row)
     for (std::uint32_t s = row_start_[row]; s < row_start_[row + 1]; ++s)
-      out.push_back({row, partner_[s], {stretch_[s].tangential, stretch_[s].rolling, true, stretch_[s].normal}});
+      out.push_back({row, partner_[s], stretch_[s].history(false)});
   return out;
 }
 
@@ -164,8 +162,7 @@ void ContactHistory::scatter(std::span<const NeighbourPair> pairs, std::span<con
   stretch_.resize(write);
   for (std::uint32_t s = 0; s < write; ++s) {
     const NeighbourPair& pr = pairs[source_[s]];
-    const PairHistory& h = in[source_[s]];
-    stretch_[s] = {pr.i < pr.j ? h.tangential_stretch : Vec3(-h.tangential_stretch), h.rolling_stretch, h.normal_state};
+    stretch_[s] = Stretch::of(in[source_[s]], !(pr.i < pr.j));
   }
 }
 

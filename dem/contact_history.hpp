@@ -64,10 +64,24 @@ class ContactHistory {
   void scatter(std::span<const NeighbourPair> pairs, std::span<const PairHistory> in);
 
  private:
-  // The stretches and normal state of a stored pair (in_contact is implied by being stored).
+  // The stretches and scalar states of a stored pair, oriented for (row, partner) (in_contact is implied by being
+  // stored; pair_history.hpp says how each part turns under the swap).
   struct Stretch {
     Vec3 tangential, rolling;
-    double normal;
+    double normal, twisting;
+    static Stretch of(const PairHistory& h, bool swapped) {
+      return {swapped ? Vec3(-h.tangential_stretch) : h.tangential_stretch, h.rolling_stretch, h.normal_state,
+              h.twisting_stretch};
+    }
+    PairHistory history(bool swapped) const {
+      PairHistory h;
+      h.tangential_stretch = swapped ? Vec3(-tangential) : tangential;
+      h.rolling_stretch = rolling;
+      h.in_contact = true;
+      h.normal_state = normal;
+      h.twisting_stretch = twisting;
+      return h;
+    }
   };
   // The row of the lower index, the partner and whether the caller's order is swapped.
   struct Key {

@@ -281,6 +281,7 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     else if (o.has("series_per_cycle"))
       o.fail("series_per_cycle", "applies to flow.type = oscillatory only (the others write every series_every)");
     out.snapshot_every = o.number("snapshot_every", out.snapshot_every, Range::positive());
+    out.snapshot_every_steps = o.integer("snapshot_every_steps", out.snapshot_every_steps, 0, 1'000'000'000);
     out.checkpoint_every = o.number("checkpoint_every", out.checkpoint_every, Range::positive());
     out.checkpoint_seconds = o.number("checkpoint_seconds", out.checkpoint_seconds, Range::positive());
     o.finish();
@@ -379,6 +380,7 @@ YAML::Node to_yaml(const Case& c) {
   r["output"]["series_every"] = number_node(c.run.output.series_every);
   if (c.simulation.flow.periodic()) r["output"]["series_per_cycle"] = c.run.output.series_per_cycle;
   r["output"]["snapshot_every"] = number_node(c.run.output.snapshot_every);
+  if (c.run.output.snapshot_every_steps > 0) r["output"]["snapshot_every_steps"] = c.run.output.snapshot_every_steps;
   r["output"]["checkpoint_every"] = number_node(c.run.output.checkpoint_every);
   r["output"]["checkpoint_seconds"] = number_node(c.run.output.checkpoint_seconds);
   return n;

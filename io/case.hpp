@@ -30,6 +30,7 @@ struct OutputCase {
   double series_every = 0.01;     // strain between time-series rows
   int series_per_cycle = 100;     // oscillatory flow: time-series rows per cycle, evenly in time
   double snapshot_every = 1.0;    // strain between snapshots
+  long snapshot_every_steps = 0;  // also a snapshot every this many steps (0: none): a blow-up or a creep, step by step
   double checkpoint_every = 1.0;  // strain between checkpoints
   double checkpoint_seconds = 600.0;  // wall-clock seconds between checkpoints
 };

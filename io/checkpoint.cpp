@@ -61,9 +61,10 @@ std::int64_t content_checksum(const SimulationState& s) {
     h(ij, sizeof ij);
     h(e.history.tangential_stretch.data(), 3 * sizeof(double));
     h(e.history.rolling_stretch.data(), 3 * sizeof(double));
-    // Only a normal law with hysteresis sets a normal state: checkpoints written before the slot existed (and
-    // runs without such a law) have the checksum they always had.
-    if (e.history.normal_state != 0.0) h(&e.history.normal_state, sizeof(double));
+    // A scalar slot enters only where a sub-model set it: checkpoints written before a slot existed (and runs
+    // without the sub-model that keeps it) have the checksum they always had.
+    for (const PairHistorySlot& slot : scalar_slots)
+      if (e.history.*slot.member != 0.0) h(&(e.history.*slot.member), sizeof(double));
   }
   return h.value();
 }
@@ -109,16 +110,19 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
     h5::set_attribute(id, ".", "shear_rate", c.state.shear_rate);
     const auto& contacts = c.state.contacts;
     std::vector<std::int64_t> pairs;
-    std::vector<double> stretch, normal_state;
+    std::vector<double> stretch;
     for (const auto& e : contacts) {
       pairs.insert(pairs.end(), {e.i, e.j});
-      normal_state.push_back(e.history.normal_state);
       for (int a = 0; a < 3; ++a) stretch.push_back(e.history.tangential_stretch[a]);
       for (int a = 0; a < 3; ++a) stretch.push_back(e.history.rolling_stretch[a]);
     }
     h5::write(id, "contacts/pairs", pairs, {contacts.size(), 2});
     h5::write(id, "contacts/stretch", stretch, {contacts.size(), 6});
-    h5::write(id, "contacts/normal_state", normal_state, {contacts.size()});
+    for (const PairHistorySlot& slot : scalar_slots) {
+      std::vector<double> values;
+      for (const auto& e : contacts) values.push_back(e.history.*slot.member);
+      h5::write(id, "contacts/" + std::string(slot.name), values, {contacts.size()});
+    }
     h5::write(id, "solver/warm_start", c.state.warm_start, {c.state.warm_start.size()});
     h5::write(id, "integrator/verlet", c.state.verlet, {c.state.verlet.size()});
     h5::set_attribute(id, ".", "next_series", c.clock.next_series);
@@ -212,12 +216,13 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     const std::vector<std::int64_t> pairs = h5::read_ints(id, "contacts/pairs");
     const std::vector<double> stretch = h5::read_doubles(id, "contacts/stretch");
     if (stretch.size() != 3 * pairs.size()) throw InputError(path + ": contacts/stretch does not match contacts/pairs");
-    // Absent in checkpoints written before the normal laws had a history slot: zero, as they were.
-    const std::vector<double> normal_state = h5::exists(id, "contacts/normal_state")
-                                                 ? h5::read_doubles(id, "contacts/normal_state")
-                                                 : std::vector<double>(pairs.size() / 2, 0.0);
-    if (2 * normal_state.size() != pairs.size())
-      throw InputError(path + ": contacts/normal_state does not match contacts/pairs");
+    // A scalar slot is absent in checkpoints written before it existed: zero, as it was.
+    std::vector<std::vector<double>> scalars;
+    for (const PairHistorySlot& slot : scalar_slots) {
+      const std::string name = "contacts/" + std::string(slot.name);
+      scalars.push_back(h5::exists(id, name) ? h5::read_doubles(id, name) : std::vector<double>(pairs.size() / 2, 0.0));
+      if (2 * scalars.back().size() != pairs.size()) throw InputError(path + ": " + name + " does not match contacts/pairs");
+    }
     for (std::size_t k = 0; k < pairs.size() / 2; ++k) {
       const std::int64_t i = pairs[2 * k], j = pairs[2 * k + 1];
       if (i < 0 || j <= i || static_cast<std::size_t>(j) >= n)
@@ -226,10 +231,12 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
       e.history.tangential_stretch = Vec3(stretch[6 * k], stretch[6 * k + 1], stretch[6 * k + 2]);
       e.history.rolling_stretch = Vec3(stretch[6 * k + 3], stretch[6 * k + 4], stretch[6 * k + 5]);
       e.history.in_contact = true;
-      e.history.normal_state = normal_state[k];
-      if (!e.history.tangential_stretch.allFinite() || !e.history.rolling_stretch.allFinite() ||
-          !std::isfinite(e.history.normal_state))
-        throw InputError(path + ": contact " + std::to_string(k) + " has a non-finite stretch");
+      bool finite = e.history.tangential_stretch.allFinite() && e.history.rolling_stretch.allFinite();
+      for (std::size_t q = 0; q < scalar_slots.size(); ++q) {
+        e.history.*scalar_slots[q].member = scalars[q][k];
+        finite = finite && std::isfinite(scalars[q][k]);
+      }
+      if (!finite) throw InputError(path + ": contact " + std::to_string(k) + " has a non-finite stretch or state");
       c.state.contacts.push_back(e);
     }
     if (h5::read_ints(id, "checksums/content") != std::vector<std::int64_t>{content_checksum(c.state)})

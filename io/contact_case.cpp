@@ -30,18 +30,42 @@ void for_each_type(TypeList<T...>, Fn&& fn) {
   (fn.template operator()<T>(), ...);
 }
 
+// The sub-models every normal law composes with: adhesion, damping, the tangential stiffness, twisting.
+template <class Model>
+void read_common(SchemaReader& r, Model& c) {
+  using N = typename Model::normal_type;
+  if constexpr (std::is_same_v<N, JkrAdhesion>) {
+    const std::vector<std::string> models(std::begin(Adhesion::names), std::end(Adhesion::names));
+    if (r.choice(std::string(Adhesion::key), "none", models) != "none")
+      r.fail(std::string(Adhesion::key), "law: jkr carries its own adhesion (work_of_adhesion); give adhesion: none");
+  } else {
+    c.adhesion = Adhesion::read(r, N::default_adhesion, N::default_g_adh);
+  }
+  c.damping = NormalDamping::read(r);
+  if (r.has("kt")) c.kt = r.number("kt", Range::positive());
+  const std::string block(TwistingResistance::name);
+  if (r.has(block)) {
+    SchemaReader tr = r.child(block);
+    c.twisting = TwistingResistance::read(tr, c.normal.secant_stiffness() / 100.0);
+    tr.finish();
+  }
+}
+
 template <class Normal, class Friction>
 ContactLaw with_rolling(SchemaReader& r, const Normal& normal, const Friction& friction, const SurfaceForces& s) {
+  ContactModel<Normal, Friction> c{normal, friction};
+  read_common(r, c);
   const std::string block(RollingResistance::name);  // the law's own name is its case block
-  if (!r.has(block)) return ComposedLaw<ContactModel<Normal, Friction>>{{normal, friction, {}}, s};
+  if (!r.has(block)) return ComposedLaw<ContactModel<Normal, Friction>>{c, s};
   SchemaReader rr = r.child(block);
   const RollingResistance rolling = RollingResistance::read(rr, normal.secant_stiffness() / 100.0);
   rr.finish();
-  return ComposedLaw<ContactModel<Normal, Friction, RollingResistance>>{{normal, friction, rolling}, s};
+  ContactModel<Normal, Friction, RollingResistance> cr{normal, friction, rolling, c.adhesion, c.damping, c.twisting, c.kt};
+  return ComposedLaw<ContactModel<Normal, Friction, RollingResistance>>{cr, s};
 }
 
-// One law from the keys of r: {law, its keys, friction, mu or mu_s, critical_load, rolling, surface forces}.
-// Coulomb friction with mu = 0 is no friction.
+// One law from the keys of r: {law, its keys, friction, mu (or mu_s), critical_load, kt, adhesion and its keys,
+// damping and its keys, rolling, twisting, surface forces}. Coulomb friction with mu = 0 is no friction.
 ContactLaw read_law(SchemaReader& r) {
   const std::string law = r.choice("law", "soft_repulsion", names(NormalLaws{}));
   const SurfaceForces surface = SurfaceForces::read(r);
@@ -49,10 +73,10 @@ ContactLaw read_law(SchemaReader& r) {
   for_each_type(NormalLaws{}, [&]<class N>() {
     if (N::name != law) return;
     const std::string friction = r.choice("friction", std::string(N::default_friction), names(FrictionLaws{}));
-    const N normal = N::read(r, friction != NoFriction::name);
+    const N normal = N::read(r);
     for_each_type(FrictionLaws{}, [&]<class F>() {
       if (F::name != friction) return;
-      const F f = F::read(r, N::friction_key, N::default_mu);
+      const F f = F::read(r, N::default_mu);
       if constexpr (std::is_same_v<F, CoulombFriction>) {
         if (f.coefficient() == 0.0) {
           out = with_rolling(r, normal, NoFriction{}, surface);
@@ -85,8 +109,15 @@ void read_species_pairs(SchemaReader& r, int species, ContactLaw& law) {
         e.fail(std::string(key), "a species pair takes the case's law and surface forces; give only the parameters that differ");
     YAML::Node merged = YAML::Clone(r.node());
     merged.remove("species_pairs");
-    for (const auto& kv : e.node())
-      if (kv.first.Scalar() != "species") merged[kv.first.Scalar()] = YAML::Clone(kv.second);
+    for (const auto& kv : e.node()) {
+      const std::string key = kv.first.Scalar();
+      if (key == "species") continue;
+      if (key == "mu" || key == "mu_s") {  // one coefficient under either name (friction_coefficient.hpp)
+        merged.remove("mu");
+        merged.remove("mu_s");
+      }
+      merged[key] = YAML::Clone(kv.second);
+    }
     SchemaReader m(merged, e.path());
     const ContactLaw pair = read_law(m);
     m.finish();
@@ -107,14 +138,23 @@ template <class Model>
 void write_model(YAML::Node& n, const Model& c) {
   using N = typename Model::normal_type;
   YamlWriter w{n};
-  c.normal.write(w, Model::has_friction);
+  c.normal.write(w);
   // A law whose default is no friction writes none when it has none (soft_repulsion: {law, k_hat}).
-  if (Model::has_friction || N::default_friction != NoFriction::name) c.friction.write(w, N::friction_key);
+  if (Model::has_friction || N::default_friction != NoFriction::name) c.friction.write(w);
+  if (Model::has_friction) w.number("kt", c.tangential_stiffness());
+  c.adhesion.write(w, N::default_adhesion);
+  c.damping.write(w);
   if constexpr (Model::has_rolling) {
     YAML::Node rolling;
     YamlWriter rw{rolling};
     c.rolling.write(rw);
     n[std::string(RollingResistance::name)] = rolling;
+  }
+  if (c.twisting.active) {
+    YAML::Node twisting;
+    YamlWriter tw{twisting};
+    c.twisting.write(tw);
+    n[std::string(TwistingResistance::name)] = twisting;
   }
 }
 

@@ -99,13 +99,15 @@ double SeriesWriter::running_viscosity(const Simulation& sim) const {
 }
 
 SnapshotWriter::SnapshotWriter(RunContext& r)
-    : trigger_(r.clock.next_snapshot, r.c.run.output.snapshot_every, strain_tolerance) {}
+    : trigger_(r.clock.next_snapshot, r.c.run.output.snapshot_every, strain_tolerance),
+      steps_(r.c.run.output.snapshot_every_steps) {}
 
 void SnapshotWriter::evaluated(RunContext& r) {
   const double strain = r.strain();
-  if (!trigger_.due(strain)) return;
+  const bool by_strain = trigger_.due(strain);
+  if (!by_strain && !steps_.due(r.sim.state().step)) return;
   r.record.file().write_snapshot(snapshot_of(r.sim));
-  trigger_.fire(strain);
+  if (by_strain) trigger_.fire(strain);
 }
 
 void ProgressReporter::evaluated(RunContext& r) {

@@ -5,6 +5,7 @@
 // they are listed, which is the order the outputs were always written in (results and checkpoints are unchanged).
 #pragma once
 #include <chrono>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -35,6 +36,17 @@ class IntervalTrigger {
  private:
   double& next_;
   double every_, tolerance_;
+};
+
+// Fires on every step count that is a multiple of `every` (0: never). The step count is part of the state, so a
+// checkpoint carries the schedule by itself.
+class StepTrigger {
+ public:
+  explicit StepTrigger(long every) : every_(every) {}
+  bool due(std::int64_t step) const { return every_ > 0 && step % every_ == 0; }
+
+ private:
+  long every_;
 };
 
 struct RunContext {
@@ -75,7 +87,7 @@ class SeriesWriter final : public RunObserver {
   double stress_sum_ = 0.0, rate_sum_ = 0.0;
 };
 
-// A snapshot every run.output.snapshot_every of strain.
+// A snapshot every run.output.snapshot_every of strain, and every snapshot_every_steps steps when that is set.
 class SnapshotWriter final : public RunObserver {
  public:
   explicit SnapshotWriter(RunContext& r);
@@ -83,6 +95,7 @@ class SnapshotWriter final : public RunObserver {
 
  private:
   IntervalTrigger trigger_;
+  StepTrigger steps_;
 };
 
 class ProgressReporter final : public RunObserver {

@@ -31,6 +31,8 @@ cases=(
   "phim_stress_mu0|$root/cases/phim/adhesive_bidisperse.yaml|flow.shear_stress=2 contact.mu_s=0"
   "oscillatory|$root/cases/protocols/oscillatory_frictional.yaml|"
   "fcm_adhesive|$v/crossval_adhesive.yaml|hydrodynamics.model=fcm"
+  "jkr_pull_off|$v/jkr_pull_off.yaml|"
+  "damped_rolling|$v/frictional_mu1.yaml|contact.gamma_n=0.04 contact.rolling.mu_r=0.1"
 )
 mkdir -p "$out"
 status=0

@@ -8,9 +8,11 @@
 // loops over pairs inside, so the inner loop calls the concrete law directly: no virtual call,
 // no per-pair dispatch in the hot loop.
 //
-// A new law: its file (a struct with name, documentation, parameters, apply, energy, read and write, as
-// hertz_adhesive.hpp), one line in NormalLaws or FrictionLaws below, and its test. The case reader and writer
-// (io/contact_case.cpp) and every driver follow from the lists.
+// A new normal or friction law: its file (a struct with name, documentation, parameters, apply, energy, read and
+// write, as hertz_adhesive.hpp), one line in NormalLaws or FrictionLaws below, and its test. The case reader and
+// writer (io/contact_case.cpp) and every driver follow from the lists. Damping, adhesion and twisting are values
+// inside every model (normal_damping.hpp, adhesion.hpp, twisting_resistance.hpp): a new model of one of them is a
+// branch in its file.
 #pragma once
 #include <algorithm>
 #include <array>
@@ -153,11 +155,11 @@ decltype(auto) with_law(const ContactLaw& law, Fn&& fn) {
   return std::visit(std::forward<Fn>(fn), law);
 }
 
-// The constant adhesion force F_adh of the normal law (paper 004 eq. 16), 0 for laws without adhesion: it sets the
+// The adhesion force F_adh of the a_1 pair (paper 004 eq. 16; JKR's pull-off), 0 without adhesion: it sets the
 // stress scale sigma* = 6 pi Sigma_xy a_1^2 / F_adh and G_adh = F_adh / (6 pi eta a_1^2 gammadot). With a
-// species-pair table, the law's own F_adh (the paper's scale is that of the a_1 spheres, species 0).
+// species-pair table, the case's own F_adh (the paper's scale is that of the a_1 spheres, species 0).
 inline double adhesion_force(const ContactLaw& law) {
-  return std::visit([](const auto& l) { return l.contact.normal.adhesion_force(); }, law);
+  return std::visit([](const auto& l) { return l.contact.adhesion_force(); }, law);
 }
 
 }  // namespace suspend

@@ -6,10 +6,10 @@
 // what turns the rheology from frictionless at low stress to frictional at high stress (shear thickening).
 // Units: F_CL in eta_0 gammadot a_1^2; its inverse sets the dimensionless rate of paper 002 Fig. 4.
 #pragma once
-#include <string>
 #include <string_view>
 
 #include "core/range.hpp"
+#include "dem/contact/friction_coefficient.hpp"
 
 namespace suspend {
 
@@ -21,25 +21,25 @@ struct CriticalLoadFrictionParams {
 struct CriticalLoadFriction {
   static constexpr std::string_view name = "critical_load";
   CriticalLoadFrictionParams p;
-  void validate(std::string_view mu_key = "mu") const {
-    require(p.mu, Range::non_negative(), "contact." + std::string(mu_key));
+  void validate() const {
+    require(p.mu, Range::non_negative(), "contact.mu");
     require(p.critical_load, Range::non_negative(), "contact.critical_load");
   }
   double limit(double load) const { return load > p.critical_load ? p.mu * (load - p.critical_load) : 0.0; }
   double coefficient() const { return p.mu; }
 
   template <class Reader>
-  static CriticalLoadFriction read(Reader& r, std::string_view mu_key, double default_mu) {
+  static CriticalLoadFriction read(Reader& r, double default_mu) {
     CriticalLoadFriction f;
-    f.p.mu = r.number(std::string(mu_key), default_mu, Range::non_negative());
+    f.p.mu = read_friction_coefficient(r, default_mu);
     f.p.critical_load = r.number("critical_load", f.p.critical_load, Range::non_negative());
     return f;
   }
   template <class Writer>
-  void write(Writer& w, std::string_view mu_key) const {
+  void write(Writer& w) const {
     w.text("friction", name);
     w.number("critical_load", p.critical_load);
-    w.number(mu_key, p.mu);
+    w.number("mu", p.mu);
   }
 };
 

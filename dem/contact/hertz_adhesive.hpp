@@ -1,15 +1,16 @@
-// Hertz contact with constant adhesion at a roughness height, a normal sub-model (paper 004, section II D,
-// eqs. 14-18). F_adh = 0 is Hertz without adhesion.
+// Hertz contact at a roughness height, the normal sub-model of paper 004's adhesive contact (section II D, eqs.
+// 14-18). Its constant adhesion -F_adh (eq. 14) is the adhesion sub-model (adhesion.hpp), `adhesion: constant` with
+// paper 004's g_adh = 0.9 by default for this law; `adhesion: none` is Hertz without adhesion.
 //
 // Contact while the surface gap h is below the roughness height h_r: compression delta = h_r - h > 0
 // (no overlap needed; the spheres' hydrodynamic surfaces stay apart by h). Forces ON j (n from i to j):
 //   normal      F_n n,  F_n = k_n delta^(3/2) - F_adh          (eq. 14; positive = repulsive)
-//               the Hertz part goes to contact_normal, -F_adh n to adhesion
+//               the Hertz part goes to contact_normal, -F_adh n (the adhesion sub-model) to adhesion
 //   tangential  (a friction sub-model composed with it, contact_model.hpp) F_t = -k_t Y (Y = tangential stretch,
 //               eq. 15); its load is the elastic force F_n + F_adh = k_n delta^(3/2): Coulomb friction slides at
 //               mu_s (F_n + F_adh) (eq. 16), critical-load friction acts once F_n + F_adh exceeds F_CL.
-//               k_t = (2/7) k_n sqrt(delta_bar), delta_bar = eps_bar h_r the typical compression   (eqs. 17-18):
-//               the classic 2/7 tangential/normal ratio applied to the Hertz secant stiffness
+//               default k_t = (2/7) k_n sqrt(delta_bar), delta_bar = eps_bar h_r the typical compression
+//               (eqs. 17-18): the classic 2/7 tangential/normal ratio applied to the Hertz secant stiffness
 //               F/delta = k_n sqrt(delta) at the typical compression, so k_t is a constant [force/length].
 //   torques     at the contact point, lever arms of eq. 11.
 //   rolling     (optional sub-model) default k_r = k_n sqrt(delta_bar) / 100, the secant stiffness over 100 as for
@@ -24,7 +25,7 @@
 //   * k_n (defaults 0.1 and 100: inactive at the typical compression 0.05 h_r, and it multiplies the stiffness of
 //   the last tenth of the roughness by 100). It is conservative, goes to contact_normal, and does not enter the
 //   friction limit (eq. 16 involves eq. 14 only). repulsion_stiffness = 0 switches it off.
-// Energy: (2/5) k_n delta^(5/2) - F_adh delta + (2/5) k_s (h_s - h)^(5/2); F_j = -dE/dr_j.
+// Energy: (2/5) k_n delta^(5/2) + (2/5) k_s (h_s - h)^(5/2) (the adhesion adds -F_adh delta); F_j = -dE/dr_j.
 // Units: lengths in a_1, forces in eta_0 gammadot a_1^2, k_n in eta_0 gammadot a_1^(1/2), k_t in eta_0 gammadot a_1.
 #pragma once
 #include <cmath>
@@ -40,41 +41,36 @@
 namespace suspend {
 
 // Defaults: paper 004 FDM/FCM set-up: h_r = 5e-3 a_1, eps_bar = 5e-2, Gamma-bar = 1 (k_n from eq. 17 with
-// gammadot_0 = 1), G_adh with Gamma-bar x G_adh = 0.9 (section II E 2); mu_s = 0.5 is the friction's default.
+// gammadot_0 = 1); the adhesion's G_adh with Gamma-bar x G_adh = 0.9 (section II E 2) and mu_s = 0.5 are this law's
+// defaults for the adhesion and friction sub-models.
 struct HertzAdhesiveParams {
   double roughness = 5.0e-3;                                                   // h_r
   double eps_bar = 5.0e-2;                                                     // delta_bar / h_r
   double kn = 6.0 * std::numbers::pi / std::pow(5.0e-2 * 5.0e-3, 1.5);         // Gamma-bar = 1
-  double f_adh = 0.9 * 6.0 * std::numbers::pi;                                 // G_adh = 0.9
   double repulsion_onset = 0.1;      // h_s / h_r
   double repulsion_stiffness = 1.0e2;  // k_s / k_n
-  // Paper 004's groups as the case gave them (NaN when k_n and F_adh were set directly): written back as given, since
-  // recomputed from k_n and F_adh they move in the last digit and a resolved case must read back to itself.
+  // Paper 004's group as the case gave it (NaN when k_n was set directly): written back as given, since recomputed
+  // from k_n it moves in the last digit and a resolved case must read back to itself.
   double gamma_bar = std::numeric_limits<double>::quiet_NaN();
-  double g_adh = std::numeric_limits<double>::quiet_NaN();
   void validate() const {
     require(roughness, Range::positive(), "contact.roughness");
     require(eps_bar, Range::positive(), "contact.eps_bar");
-    // k_n and F_adh are what gamma_bar (with eps_bar, roughness) and g_adh set (paper 004 eq. 17).
+    // k_n is what gamma_bar (with eps_bar, roughness) sets (paper 004 eq. 17).
     require(kn, Range::positive(), "contact.gamma_bar (through the Hertz stiffness k_n it sets)");
-    require(f_adh, Range::non_negative(), "contact.g_adh (through the adhesion force 6 pi g_adh)");
     require(repulsion_stiffness, Range::non_negative(), "contact.repulsion_stiffness");
     require(repulsion_onset, Range::closed(0.0, 1.0), "contact.repulsion_onset");
   }
 };
 
-// Paper 004's dimensionless groups -> parameters, forces in eta_0 gammadot_0 a_1^2 (a_1 = 1):
-// Gamma-bar = 6 pi / (k_n (eps_bar h_r)^(3/2)) (eq. 17), G_adh = F_adh / (6 pi) (section II E 1).
-inline HertzAdhesiveParams hertz_adhesive_from_groups(double gamma_bar, double g_adh, double eps_bar,
-                                                      double roughness) {
+// Paper 004's dimensionless group -> parameters, forces in eta_0 gammadot_0 a_1^2 (a_1 = 1):
+// Gamma-bar = 6 pi / (k_n (eps_bar h_r)^(3/2)) (eq. 17).
+inline HertzAdhesiveParams hertz_from_groups(double gamma_bar, double eps_bar, double roughness) {
   require(gamma_bar, Range::positive(), "contact.gamma_bar");
   HertzAdhesiveParams p;
   p.roughness = roughness;
   p.eps_bar = eps_bar;
   p.kn = 6.0 * std::numbers::pi / (gamma_bar * std::pow(eps_bar * roughness, 1.5));
-  p.f_adh = 6.0 * std::numbers::pi * g_adh;
   p.gamma_bar = gamma_bar;
-  p.g_adh = g_adh;
   p.validate();
   return p;
 }
@@ -83,11 +79,12 @@ class HertzAdhesive {
  public:
   static constexpr std::string_view name = "hertz_adhesive";
   static constexpr std::string_view documentation = "docs/contact.md, section 'Hertz + constant adhesion at roughness height'";
-  static constexpr std::string_view friction_key = "mu_s";
   static constexpr std::string_view stiffness_keys =
       "contact.gamma_bar, eps_bar, roughness and repulsion_stiffness";
   static constexpr std::string_view default_friction = "coulomb";
   static constexpr double default_mu = 0.5;  // paper 004's mu_s
+  static constexpr std::string_view default_adhesion = "constant";
+  static constexpr double default_g_adh = 0.9;  // paper 004 section II E 2
 
   HertzAdhesive() : HertzAdhesive(HertzAdhesiveParams{}) {}
   explicit HertzAdhesive(const HertzAdhesiveParams& params)
@@ -98,17 +95,16 @@ class HertzAdhesive {
   const HertzAdhesiveParams& params() const { return p_; }
   void validate() const { p_.validate(); }
 
-  double kt() const { return kt_; }                                   // eq. 18
-  double zero_force_compression() const { return std::pow(p_.f_adh / p_.kn, 2.0 / 3.0); }  // delta_0
-  double pull_off_force() const { return p_.f_adh; }
+  // delta_0 under a constant adhesion force f_adh.
+  double zero_force_compression(double f_adh) const { return std::pow(f_adh / p_.kn, 2.0 / 3.0); }
   double range() const { return p_.roughness; }
   // dF/d delta = (3/2) k_n sqrt(delta) at the largest compression h_r, stiffened by the supplementary wall.
   double stiffness_scale() const {
     return 1.5 * p_.kn * std::sqrt(p_.roughness) * (1.0 + p_.repulsion_stiffness * std::sqrt(p_.repulsion_onset));
   }
   double secant_stiffness() const { return p_.kn * std::sqrt(p_.eps_bar * p_.roughness); }  // at delta_bar
-  double tangential_stiffness() const { return kt_; }
-  double adhesion_force() const { return p_.f_adh; }
+  double default_tangential_stiffness() const { return kt_; }  // eq. 18
+  double adhesion_force() const { return 0.0; }  // the adhesion sub-model's
 
   NormalContact apply(const PairGeometry& g, const RelativeMotion&, PairForce& f) const {
     const double gap = g.gap();
@@ -117,11 +113,9 @@ class HertzAdhesive {
     const double elastic = p_.kn * delta * std::sqrt(delta);
     const double s = h_s_ - gap;
     const double supplementary = s > 0.0 ? k_s_ * s * std::sqrt(s) : 0.0;
-    f[Contribution::contact_normal] = (elastic + supplementary) * g.n;
-    f[Contribution::adhesion] = -p_.f_adh * g.n;
     // dF_n/d(delta): the Hertz tangent 1.5 k_n sqrt(delta), and the supplementary wall's while it acts.
     f.normal_stiffness = 1.5 * (p_.kn * std::sqrt(delta) + (s > 0.0 ? k_s_ * std::sqrt(s) : 0.0));
-    return {true, elastic};
+    return {true, elastic, elastic + supplementary};
   }
 
   double energy(const PairGeometry& g) const {
@@ -130,29 +124,27 @@ class HertzAdhesive {
     if (!(delta > 0.0)) return 0.0;
     const double s = h_s_ - gap;
     const double e_s = s > 0.0 ? 0.4 * k_s_ * s * s * std::sqrt(s) : 0.0;
-    return 0.4 * p_.kn * delta * delta * std::sqrt(delta) - p_.f_adh * delta + e_s;
+    return 0.4 * p_.kn * delta * delta * std::sqrt(delta) + e_s;
   }
 
-  // Paper 004: Gamma-bar = 6 pi eta a_1^2 gammadot / (k_n (eps_bar h_r)^(3/2)) (eq. 17), G_adh = F_adh / (6 pi).
+  // Paper 004: Gamma-bar = 6 pi eta a_1^2 gammadot / (k_n (eps_bar h_r)^(3/2)) (eq. 17).
   template <class Reader>
-  static HertzAdhesive read(Reader& r, bool) {
+  static HertzAdhesive read(Reader& r) {
     const double roughness = r.number("roughness", 5.0e-3, Range::positive());
     const double eps_bar = r.number("eps_bar", 5.0e-2, Range::positive());
     const double gamma_bar = r.number("gamma_bar", 1.0, Range::positive());
-    const double g_adh = r.number("g_adh", 0.9, Range::non_negative());
-    HertzAdhesiveParams p = hertz_adhesive_from_groups(gamma_bar, g_adh, eps_bar, roughness);
+    HertzAdhesiveParams p = hertz_from_groups(gamma_bar, eps_bar, roughness);
     p.repulsion_onset = r.number("repulsion_onset", p.repulsion_onset, Range::closed(0.0, 1.0));
     p.repulsion_stiffness = r.number("repulsion_stiffness", p.repulsion_stiffness, Range::non_negative());
     return HertzAdhesive(p);
   }
   template <class Writer>
-  void write(Writer& w, bool) const {
+  void write(Writer& w) const {
     w.number("roughness", p_.roughness);
     w.number("eps_bar", p_.eps_bar);
     w.number("gamma_bar", std::isnan(p_.gamma_bar)
                               ? 6.0 * std::numbers::pi / (p_.kn * std::pow(p_.eps_bar * p_.roughness, 1.5))
                               : p_.gamma_bar);
-    w.number("g_adh", std::isnan(p_.g_adh) ? p_.f_adh / (6.0 * std::numbers::pi) : p_.g_adh);
     w.number("repulsion_onset", p_.repulsion_onset);
     w.number("repulsion_stiffness", p_.repulsion_stiffness);
   }

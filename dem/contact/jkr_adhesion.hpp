@@ -48,10 +48,11 @@ class JkrAdhesion {
  public:
   static constexpr std::string_view name = "jkr";
   static constexpr std::string_view documentation = "docs/contact.md, section 'JKR adhesion'";
-  static constexpr std::string_view friction_key = "mu";
   static constexpr std::string_view stiffness_keys = "contact.modulus";
   static constexpr std::string_view default_friction = "none";
   static constexpr double default_mu = 1.0;
+  static constexpr std::string_view default_adhesion = "none";  // its adhesion is its own
+  static constexpr double default_g_adh = 0.0;
   static constexpr bool keeps_history = true;
   static constexpr double max_reduced_radius = 5.0;  // R* the neighbour range covers
 
@@ -90,7 +91,7 @@ class JkrAdhesion {
   double range() const { return -snap_overlap(max_reduced_radius); }
   double stiffness_scale() const { return 2.0 * p_.modulus * 2.0 * zero_load_radius(0.5); }
   double secant_stiffness() const { return 2.0 * p_.modulus * zero_load_radius(0.5); }
-  double tangential_stiffness() const { return 2.0 / 7.0 * secant_stiffness(); }
+  double default_tangential_stiffness() const { return 2.0 / 7.0 * secant_stiffness(); }
   double adhesion_force() const { return pull_off_force(0.5); }
 
   NormalContact apply(const PairGeometry& g, const RelativeMotion&, PairForce& f, PairHistory& h) const {
@@ -109,12 +110,11 @@ class JkrAdhesion {
     h.normal_state = a;
     const double e = p_.modulus, sqrt_a = std::sqrt(a);
     const double hertz = 4.0 * e * a * a * a / (3.0 * r), adhesion = 2.0 * e * c_ * a * sqrt_a;
-    f[Contribution::contact_normal] = hertz * g.n;
     f[Contribution::adhesion] = -adhesion * g.n;
     // dF/d delta = (dF/da) / (d delta/da), infinite at the snap; a negative tangent (the neck) is left to the force.
     const double dfda = 4.0 * e * a * a / r - 3.0 * e * c_ * sqrt_a, ddda = 2.0 * a / r - 0.5 * c_ / sqrt_a;
     f.normal_stiffness = ddda > 0.0 ? std::max(dfda / ddda, 0.0) : 0.0;
-    return {true, hertz - adhesion + 2.0 * pull_off_force(r)};
+    return {true, hertz - adhesion + 2.0 * pull_off_force(r), hertz};
   }
 
   double energy(const PairGeometry& g) const {
@@ -126,14 +126,14 @@ class JkrAdhesion {
   }
 
   template <class Reader>
-  static JkrAdhesion read(Reader& rd, bool) {
+  static JkrAdhesion read(Reader& rd) {
     JkrParams p;
     p.modulus = rd.number("modulus", p.modulus, Range::positive());
     p.work_of_adhesion = rd.number("work_of_adhesion", p.work_of_adhesion, Range::non_negative());
     return JkrAdhesion(p);
   }
   template <class Writer>
-  void write(Writer& w, bool) const {
+  void write(Writer& w) const {
     w.number("modulus", p_.modulus);
     w.number("work_of_adhesion", p_.work_of_adhesion);
   }

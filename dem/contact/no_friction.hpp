@@ -8,19 +8,19 @@ namespace suspend {
 
 struct NoFriction {
   static constexpr std::string_view name = "none";
-  void validate(std::string_view = "mu") const {}
+  void validate() const {}
   double coefficient() const { return 0.0; }
 
   template <class Reader>
-  static NoFriction read(Reader& r, std::string_view mu_key, double) {
-    const std::string key(mu_key);
-    if (r.has(key) && r.number(key, 0.0) != 0.0) r.fail(key, "must be 0 with friction: none");
+  static NoFriction read(Reader& r, double) {
+    for (const std::string key : {"mu", "mu_s"})
+      if (r.has(key) && r.number(key, 0.0) != 0.0) r.fail(key, "must be 0 with friction: none");
     return {};
   }
   template <class Writer>
-  void write(Writer& w, std::string_view mu_key) const {
+  void write(Writer& w) const {
     w.text("friction", name);
-    w.number(mu_key, 0.0);
+    w.number("mu", 0.0);
   }
 };
 

@@ -92,12 +92,15 @@ struct PairForce {
   }
 };
 
-// What a normal sub-model tells the tangential and rolling sub-models composed with it (contact_model.hpp):
-// whether the pair is in contact, and the load that friction and rolling resistance are proportional to (the
-// signed spring + dashpot force of the linear laws; the Hertz elastic force, F_n + F_adh, of paper 004 eq. 16).
+// What a normal sub-model tells the sub-models composed with it (contact_model.hpp): whether the pair is in contact,
+// its normal force on j along n (positive = repulsive; the contact_normal contribution, to which the damping sub-model
+// adds its force before it is written), and the load that friction, rolling and twisting resistance are
+// proportional to (the spring force of the linear laws, plus the damping; the Hertz elastic force, F_n + F_adh, of
+// paper 004 eq. 16). A normal law with its own adhesion (JKR) writes that part to the adhesion contribution itself.
 struct NormalContact {
   bool active = false;
   double load = 0.0;
+  double force = 0.0;
 };
 
 // Pair stresslet of one force contribution, S = -sym(d F_j^T) (paper 000 eqs. 9c-9d with F_ij = -F_j). Summed over

@@ -1,6 +1,6 @@
 // Soft repulsion, a normal sub-model: the simplest honest contact law.
-// F_j = k_n * delta * n for overlap delta = -(gap) > 0, zero otherwise (a frictionless, undamped linear spring;
-// paper 000 eq. 4 with k_t = gamma_n = 0 unless a friction sub-model is composed, then k_t = (2/7) k_n).
+// F_j = k_n * delta * n for overlap delta = -(gap) > 0, zero otherwise (paper 000 eq. 4a without its dashpot; with
+// no other sub-model a frictionless, undamped linear spring). Composed friction's default k_t = (2/7) k_n.
 // Potential energy (k_n/2) delta^2, so F_j = -dE/dr_j.
 // Units: k_n in eta_0 gammadot a_1 (the stiffness k-hat of paper 000 eq. 12 when a_0 = a_1, io/units.hpp).
 #pragma once
@@ -13,37 +13,33 @@ namespace suspend {
 
 struct SoftRepulsionParams {
   double kn = 1.0e4;
-  double kt = 2.0 / 7.0 * 1.0e4;  // the tangential spring, used only with a friction sub-model
 };
 
 struct SoftRepulsion {
   static constexpr std::string_view name = "soft_repulsion";
   static constexpr std::string_view documentation = "docs/contact.md, section 'Soft repulsion'";
-  static constexpr std::string_view friction_key = "mu";
   static constexpr std::string_view stiffness_keys = "contact.k_hat";
   static constexpr std::string_view default_friction = "none";
   static constexpr double default_mu = 1.0;
+  static constexpr std::string_view default_adhesion = "none";
+  static constexpr double default_g_adh = 0.0;
 
   SoftRepulsionParams p;
 
-  void validate() const {
-    require(p.kn, Range::positive(), "contact.k_hat");
-    require(p.kt, Range::positive(), "contact.kt");
-  }
+  void validate() const { require(p.kn, Range::positive(), "contact.k_hat"); }
   double range() const { return 0.0; }  // acts only on overlap
   double stiffness_scale() const { return p.kn; }
   double secant_stiffness() const { return p.kn; }
-  double tangential_stiffness() const { return p.kt; }
+  double default_tangential_stiffness() const { return 2.0 / 7.0 * p.kn; }
   double adhesion_force() const { return 0.0; }
 
-  // Adds the normal force on j; returns whether the pair is in contact and the load friction acts against.
+  // Whether the pair is in contact, its normal force on j and the load friction acts against.
   NormalContact apply(const PairGeometry& g, const RelativeMotion&, PairForce& f) const {
     const double delta = -g.gap();
     if (!(delta > 0.0)) return {};
     const double f_n = p.kn * delta;
-    f[Contribution::contact_normal] = f_n * g.n;
     f.normal_stiffness = p.kn;
-    return {true, f_n};
+    return {true, f_n, f_n};
   }
   double energy(const PairGeometry& g) const {
     const double delta = -g.gap();
@@ -51,16 +47,14 @@ struct SoftRepulsion {
   }
 
   template <class Reader>
-  static SoftRepulsion read(Reader& r, bool with_friction) {
+  static SoftRepulsion read(Reader& r) {
     SoftRepulsion s;
     s.p.kn = r.number("k_hat", s.p.kn, Range::positive());
-    s.p.kt = with_friction ? r.number("kt", 2.0 / 7.0 * s.p.kn, Range::positive()) : 2.0 / 7.0 * s.p.kn;
     return s;
   }
   template <class Writer>
-  void write(Writer& w, bool with_friction) const {
+  void write(Writer& w) const {
     w.number("k_hat", p.kn);
-    if (with_friction) w.number("kt", p.kt);
   }
 };
 

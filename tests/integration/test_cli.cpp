@@ -305,6 +305,31 @@ TEST(Cli, QuietPrintsNothingAndTheFinalStateIsASnapshot) {
   EXPECT_NE(summary.find("\"status\": \"done\""), std::string::npos) << summary;
 }
 
+// The step trigger: a snapshot on every 7th step as well as every 0.25 of strain, each step written once.
+TEST(Cli, SnapshotsEveryNStepsAsWellAsEveryStrainInterval) {
+  const std::string c = fresh_dir("every_steps");
+  const Result r = run(with_lighter({"run", restart_case, "--out", c, "--quiet", "--set", "run.output.snapshot_every=0.25",
+                                     "--set", "run.output.snapshot_every_steps=7", "--set", "run.strain=0.3"}));
+  ASSERT_EQ(r.code, 0) << r.err;
+  h5::File f = h5::File::open(c + "/run.h5", false);
+  std::int64_t last = -1;
+  int by_step = 0;
+  double first_past_quarter = 1.0, final_strain = 0.0;
+  for (int k = 0; h5::exists(f.id(), snapshot_group(static_cast<std::size_t>(k))); ++k) {
+    const std::int64_t step = h5::int_attribute(f.id(), snapshot_group(static_cast<std::size_t>(k)), "step");
+    EXPECT_GT(step, last);  // each step once, in order
+    last = step;
+    if (step % 7 == 0) ++by_step;
+    final_strain = h5::double_attribute(f.id(), snapshot_group(static_cast<std::size_t>(k)), "strain");
+    if (final_strain >= 0.25) first_past_quarter = std::min(first_past_quarter, final_strain);
+  }
+  EXPECT_EQ(by_step, static_cast<int>(last / 7) + 1) << "every multiple of 7 up to the last snapshot's step";
+  EXPECT_GT(by_step, 3);
+  // The strain interval's snapshots stay: the first state at or past 0.25 (within a step of it) and the final state.
+  EXPECT_LT(first_past_quarter, 0.251);
+  EXPECT_NEAR(final_strain, 0.3, 1e-12);
+}
+
 TEST(Cli, OutputThatCannotBeWrittenIsAnError) {
   // `suspend check CASE > /dev/full`: the resolved case never reaches its reader, so the program does not succeed.
   const std::string err = scratch() + "/full_err.txt";

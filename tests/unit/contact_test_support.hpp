@@ -4,21 +4,23 @@
 #include <random>
 
 #include "core/vec.hpp"
+#include "dem/contact/adhesion.hpp"
 #include "dem/contact/hertz_adhesive.hpp"
 #include "dem/contact/pair_geometry.hpp"
 #include "dem/contact/pair_history.hpp"
 
 namespace suspend::test {
 
-// Paper 004's Hertz adhesive contact (eq. 16) with round numbers: roughness 0.01, eps_bar 0.05, k_n 1e5, F_adh 2.
+// Paper 004's Hertz adhesive contact (eq. 16) with round numbers: roughness 0.01, eps_bar 0.05, k_n 1e5 (and the
+// constant adhesion F_adh 2 of round_adhesion).
 inline HertzAdhesiveParams round_hertz_adhesive() {
   HertzAdhesiveParams p;
   p.roughness = 0.01;
   p.eps_bar = 0.05;
   p.kn = 1.0e5;
-  p.f_adh = 2.0;
   return p;
 }
+inline Adhesion round_adhesion() { return Adhesion::constant(2.0); }
 
 inline Mat3 random_rotation(std::mt19937_64& rng) {
   std::normal_distribution<double> g(0.0, 1.0);

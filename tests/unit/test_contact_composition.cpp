@@ -54,8 +54,8 @@ TEST(ContactComposition, HertzWithCriticalLoadIsFrictionlessBelowTheThresholdOnT
   const HertzAdhesive hertz(simple());
   const double h = 0.002, delta = 0.01 - h;
   const double elastic = 1.0e5 * std::pow(delta, 1.5);  // F_n + F_adh = 71.55 (paper 004 eq. 14)
-  const ContactModel<HertzAdhesive, CriticalLoadFriction> below{hertz, {{0.5, elastic + 0.01}}};
-  const ContactModel<HertzAdhesive, CriticalLoadFriction> above{hertz, {{0.5, 0.2}}};
+  const ContactModel<HertzAdhesive, CriticalLoadFriction> below{hertz, {{0.5, elastic + 0.01}}, {}, test::round_adhesion()};
+  const ContactModel<HertzAdhesive, CriticalLoadFriction> above{hertz, {{0.5, 0.2}}, {}, test::round_adhesion()};
   PairHistory h1, h2;
   const PairForce f_below = slide(below, h, h1);
   const PairForce f_above = slide(above, h, h2);
@@ -88,7 +88,8 @@ TEST(ContactComposition, HertzWithRollingResistanceSaturatesAtMuRTimesTheElastic
 }
 
 TEST(ContactComposition, SoftRepulsionTakesCoulombFriction) {
-  const ContactModel<SoftRepulsion, CoulombFriction> law{SoftRepulsion{{1.0e3, 200.0}}, {{0.4}}};
+  ContactModel<SoftRepulsion, CoulombFriction> law{SoftRepulsion{{1.0e3}}, {{0.4}}};
+  law.kt = 200.0;
   PairHistory hist;
   const PairForce f = slide(law, -0.01, hist);  // overlap 0.01: F_n = 10
   EXPECT_NEAR(f[Contribution::contact_normal].x(), 10.0, 1e-12);
@@ -159,13 +160,13 @@ TEST(ContactComposition, ValidationNamesTheKeysOfTheCase) {
     return std::string("accepted");
   };
   const HertzAdhesive hertz(simple());
-  EXPECT_EQ(message(ContactModel<HertzAdhesive, CoulombFriction>{hertz, {{-0.5}}}).rfind("contact.mu_s", 0), 0u);
-  EXPECT_EQ(message(ContactModel<HertzAdhesive, CriticalLoadFriction>{hertz, {{-0.5, 0.1}}}).rfind("contact.mu_s", 0),
+  EXPECT_EQ(message(ContactModel<HertzAdhesive, CoulombFriction>{hertz, {{-0.5}}}).rfind("contact.mu =", 0), 0u);
+  EXPECT_EQ(message(ContactModel<HertzAdhesive, CriticalLoadFriction>{hertz, {{-0.5, 0.1}}}).rfind("contact.mu =", 0),
             0u);
-  EXPECT_EQ(message(ContactModel<SoftRepulsion, CoulombFriction>{SoftRepulsion{{1.0e3, 200.0}}, {{-0.4}}})
+  EXPECT_EQ(message(ContactModel<SoftRepulsion, CoulombFriction>{SoftRepulsion{{1.0e3}}, {{-0.4}}})
                 .rfind("contact.mu =", 0),
             0u);
-  EXPECT_EQ(message(ContactModel<SoftRepulsion>{SoftRepulsion{{-1.0, 200.0}}}).rfind("contact.k_hat", 0), 0u);
+  EXPECT_EQ(message(ContactModel<SoftRepulsion>{SoftRepulsion{{-1.0}}}).rfind("contact.k_hat", 0), 0u);
   LinearSpringDashpot spring;
   spring.p.kn = 0.0;
   EXPECT_EQ(message(ContactModel<LinearSpringDashpot>{spring}).rfind("contact.k_hat", 0), 0u);
@@ -197,8 +198,8 @@ TEST(ContactSpeciesPairs, TheDriverUsesEachPairsOwnStiffness) {
   st.particles.species = {0, 1};
   SimulationParams params;
   params.flow.shear_rate = 0.0;
-  ComposedLaw<ContactModel<SoftRepulsion>> law{{SoftRepulsion{{k, 2.0 / 7.0 * k}}}, {}, {}};
-  law.set_pair(0, 1, {SoftRepulsion{{k01, 2.0 / 7.0 * k01}}}, 2);
+  ComposedLaw<ContactModel<SoftRepulsion>> law{{SoftRepulsion{{k}}}, {}, {}};
+  law.set_pair(0, 1, {SoftRepulsion{{k01}}}, 2);
   params.contact = law;
   Simulation sim(st, Box(20, 20, 20), params);
   sim.evaluate();
@@ -214,7 +215,7 @@ TEST(ContactSpeciesPairs, CaseReadsAndWritesSpeciesPairs) {
   EXPECT_DOUBLE_EQ(law.contact_of(0, 0).friction.p.mu, 0.5);
   EXPECT_DOUBLE_EQ(law.contact_of(1, 1).friction.p.mu, 0.5);
   EXPECT_DOUBLE_EQ(law.contact_of(0, 1).friction.p.mu, 0.1);
-  EXPECT_DOUBLE_EQ(law.contact_of(1, 0).normal.adhesion_force(), 6.0 * M_PI * 0.3);
+  EXPECT_DOUBLE_EQ(law.contact_of(1, 0).adhesion_force(), 6.0 * M_PI * 0.3);
   EXPECT_DOUBLE_EQ(law.contact_of(1, 0).normal.params().eps_bar, 0.05);  // the case's other keys
   EXPECT_DOUBLE_EQ(adhesion_force(c.simulation.contact), 6.0 * M_PI * 0.9);  // sigma* keeps the law's F_adh
   EXPECT_EQ(to_yaml_text(parse_case(YAML::Load(to_yaml_text(c)), "")), to_yaml_text(c));
@@ -241,4 +242,62 @@ TEST(ContactSpeciesPairs, RefusesWhatASpeciesPairCannotChange) {
   e = error_of("{law: hertz_adhesive, species_pairs: [{species: [0, 1], mu_s: 0.1}, {species: [1, 0], mu_s: 0.2}]}");
   EXPECT_NE(e.find("contact.species_pairs[1].species"), std::string::npos) << e;
   EXPECT_NE(e.find("given twice"), std::string::npos) << e;
+}
+
+// Damping, adhesion, the tangential stiffness and twisting are separate choices with their own keys, for every law
+// (issue 38), and a resolved case reads back to itself.
+TEST(ContactSubModels, EachChoiceReadsAndWritesItsOwnKeys) {
+  const Case c = with_contact("{law: linear_spring, k_hat: 4.0e5, damping: viscoelastic, dissipation_time: 1.0e-3, "
+                              "adhesion: dmt, work_of_adhesion: 0.5, friction: coulomb, mu: 0.4, kt: 3.0e4, "
+                              "twisting: {mu_twist: 0.2}}");
+  const auto& law = std::get<ComposedLaw<LinearSpringCoulomb>>(c.simulation.contact).contact;
+  EXPECT_EQ(law.damping.model, NormalDamping::Model::viscoelastic);
+  EXPECT_DOUBLE_EQ(law.damping.coefficient, 1.0e-3);
+  EXPECT_EQ(law.adhesion.model, Adhesion::Model::dmt);
+  EXPECT_DOUBLE_EQ(adhesion_force(c.simulation.contact), M_PI * 0.5);  // 2 pi W R*, R* = 1/2
+  EXPECT_DOUBLE_EQ(law.tangential_stiffness(), 3.0e4);
+  EXPECT_TRUE(law.twisting.active);
+  EXPECT_DOUBLE_EQ(law.twisting.stiffness, 4.0e3);  // the secant stiffness / 100, as the rolling spring
+  EXPECT_DOUBLE_EQ(law.twisting.mu, 0.2);
+  EXPECT_EQ(to_yaml_text(parse_case(YAML::Load(to_yaml_text(c)), "")), to_yaml_text(c));
+
+  // Hertz: paper 004's constant adhesion by default, switched off by its own key; mu and mu_s are one coefficient;
+  // k_t is eq. 18's unless given.
+  const Case no_adhesion = with_contact("{law: hertz_adhesive, adhesion: none, mu: 0.3}");
+  const auto& hertz = std::get<ComposedLaw<HertzAdhesiveCoulomb>>(no_adhesion.simulation.contact);
+  EXPECT_FALSE(hertz.contact.adhesion.active());
+  EXPECT_DOUBLE_EQ(hertz.contact.friction.p.mu, 0.3);
+  const HertzAdhesiveParams& p = hertz.contact.normal.params();
+  EXPECT_DOUBLE_EQ(hertz.contact.tangential_stiffness(), 2.0 / 7.0 * p.kn * std::sqrt(p.eps_bar * p.roughness));
+  const Case paper = with_contact("{law: hertz_adhesive}");
+  EXPECT_DOUBLE_EQ(adhesion_force(paper.simulation.contact), 6.0 * M_PI * 0.9);
+
+  // The linear spring's former gamma_n key is the viscous model; 0 is no damping.
+  const Case dashpot = with_contact("{law: linear_spring, gamma_n: 0.04}");
+  const auto& damped = std::get<ComposedLaw<LinearSpringCoulomb>>(dashpot.simulation.contact);
+  EXPECT_EQ(damped.contact.damping.model, NormalDamping::Model::viscous);
+  EXPECT_DOUBLE_EQ(damped.contact.damping.coefficient, 0.04);
+  const Case undamped = with_contact("{law: linear_spring, gamma_n: 0}");
+  EXPECT_FALSE(std::get<ComposedLaw<LinearSpringCoulomb>>(undamped.simulation.contact).contact.damping.active());
+}
+
+TEST(ContactSubModels, RefusesChoicesThatDoNotCompose) {
+  auto error_of = [](const std::string& contact) -> std::string {
+    try {
+      with_contact(contact);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  std::string e = error_of("{law: jkr, adhesion: constant}");
+  EXPECT_NE(e.find("contact.adhesion: law: jkr carries its own adhesion"), std::string::npos) << e;
+  e = error_of("{law: linear_spring, damping: viscoelastic, gamma_n: 1}");
+  EXPECT_NE(e.find("contact.gamma_n"), std::string::npos) << e;
+  e = error_of("{law: hertz_adhesive, adhesion: dmt, g_adh: 1}");
+  EXPECT_NE(e.find("contact.g_adh"), std::string::npos) << e;
+  e = error_of("{law: linear_spring, adhesion: dmt}");
+  EXPECT_NE(e.find("contact.work_of_adhesion"), std::string::npos) << e;
+  e = error_of("{law: linear_spring, twisting: {k_twist: -1}}");
+  EXPECT_NE(e.find("contact.twisting.k_twist"), std::string::npos) << e;
 }

@@ -13,7 +13,8 @@ using namespace suspend::test;
 namespace {
 LinearSpringCriticalLoad law(double mu, double f_cl) {
   LinearSpringCriticalLoad l;
-  l.normal.p = {1.0e4, 2.0e3, 0.0};
+  l.normal.p = {1.0e4};
+  l.kt = 2.0e3;
   l.friction.p = {mu, f_cl};
   l.validate();
   return l;

@@ -17,8 +17,10 @@ using namespace suspend::test;
 namespace {
 constexpr double kPi = std::numbers::pi;
 HertzAdhesiveParams simple() { return test::round_hertz_adhesive(); }
-// Paper 004's contact: Hertz with adhesion and Coulomb friction mu_s = 0.5 (eq. 16).
-HertzAdhesiveCoulomb hertz(const HertzAdhesiveParams& p) { return {HertzAdhesive(p), {{0.5}}}; }
+// Paper 004's contact: Hertz with constant adhesion F_adh and Coulomb friction mu_s = 0.5 (eq. 16).
+HertzAdhesiveCoulomb hertz(const HertzAdhesiveParams& p, double f_adh = 2.0) {
+  return {HertzAdhesive(p), {{0.5}}, {}, Adhesion::constant(f_adh)};
+}
 RelativeMotion at_rest() { return {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()}; }
 // Equal unit spheres on the y axis at surface gap h.
 PairGeometry at_gap(double h) { return PairGeometry::from(Vec3(0.0, 2.0 + h, 0.0), 1.0, 1.0); }
@@ -43,12 +45,12 @@ TEST(HertzAdhesive, ContactStartsBelowTheRoughnessHeight) {
 TEST(HertzAdhesive, ZeroForceCompressionAndPullOff) {
   const HertzAdhesiveCoulomb law = hertz(simple());
   const double delta0 = std::pow(2.0 / 1.0e5, 2.0 / 3.0);
-  EXPECT_NEAR(law.normal.zero_force_compression(), delta0, 1e-15);
+  EXPECT_NEAR(law.normal.zero_force_compression(2.0), delta0, 1e-15);
   EXPECT_NEAR(normal_force(law, 0.01 - delta0), 0.0, 1e-12);
   EXPECT_LT(normal_force(law, 0.01 - 0.99 * delta0), 0.0);  // attractive below delta_0
   EXPECT_GT(normal_force(law, 0.01 - 1.01 * delta0), 0.0);
   // Pull-off: the largest tension the contact sustains is F_adh, reached as delta -> 0+.
-  EXPECT_DOUBLE_EQ(law.normal.pull_off_force(), 2.0);
+  EXPECT_DOUBLE_EQ(law.adhesion.force(at_gap(0.0)), 2.0);
   double max_tension = 0.0;
   for (int k = 1; k <= 1000; ++k) max_tension = std::max(max_tension, -normal_force(law, 0.01 - k * 1e-8));
   EXPECT_NEAR(max_tension, 2.0, 1e-6);
@@ -57,12 +59,12 @@ TEST(HertzAdhesive, ZeroForceCompressionAndPullOff) {
 
 TEST(HertzAdhesive, TangentialStiffnessFollowsEq18) {
   const HertzAdhesiveCoulomb law = hertz(simple());
-  EXPECT_NEAR(law.normal.kt(), 2.0 / 7.0 * 1.0e5 * std::sqrt(0.05 * 0.01), 1e-9);
+  EXPECT_NEAR(law.tangential_stiffness(), 2.0 / 7.0 * 1.0e5 * std::sqrt(0.05 * 0.01), 1e-9);
 }
 
 TEST(HertzAdhesive, SlipThresholdIsMuSTimesElasticForce) {
   const HertzAdhesiveCoulomb law = hertz(simple());
-  const double delta0 = law.normal.zero_force_compression();
+  const double delta0 = law.normal.zero_force_compression(2.0);
   const PairGeometry g = at_gap(0.01 - delta0);  // zero load: the paper's finite resistance mu_s F_adh
   const RelativeMotion m{Vec3::Zero(), Vec3(3.0, 0.0, 0.0), Vec3::Zero(), Vec3::Zero()};
   PairHistory h;
@@ -72,7 +74,7 @@ TEST(HertzAdhesive, SlipThresholdIsMuSTimesElasticForce) {
   // Sticking: F_t = -k_t Y with Y the accumulated slip (eq. 15).
   PairHistory h2;
   const PairForce f2 = law(at_gap(0.005), m, 1e-6, h2);
-  EXPECT_NEAR(f2[Contribution::contact_tangential].x(), -law.normal.kt() * 3e-6, 1e-12);
+  EXPECT_NEAR(f2[Contribution::contact_tangential].x(), -law.tangential_stiffness() * 3e-6, 1e-12);
 }
 
 TEST(HertzAdhesive, ForceIsMinusGradientOfEnergyIncludingTheSupplementaryRepulsion) {
@@ -138,16 +140,19 @@ TEST(HertzAdhesive, RotatingThePairConfigurationRotatesTheResult) {
 TEST(HertzAdhesive, PaperGroupsGiveTheQuotedAdhesiveCompression) {
   // Paper 004 section II E 2: Gamma-bar x G_adh = 0.9 "implies that the typical asperity compression due to the
   // adhesive force alone is delta/h_r ~ 0.9 eps_bar ~ 4.6e-2" (exactly 0.9^(2/3) eps_bar = 4.66e-2).
-  const HertzAdhesiveParams p = hertz_adhesive_from_groups(0.09, 10.0, 0.05, 5e-3);
+  const HertzAdhesiveParams p = hertz_from_groups(0.09, 0.05, 5e-3);
   EXPECT_NEAR(p.kn, 6.0 * kPi / (0.09 * std::pow(0.05 * 5e-3, 1.5)), 1e-6 * p.kn);
-  EXPECT_NEAR(p.f_adh, 60.0 * kPi, 1e-12);
-  const HertzAdhesiveCoulomb law = hertz(p);
-  EXPECT_NEAR(law.normal.zero_force_compression() / 5e-3, 4.6e-2, 0.1e-2);
-  EXPECT_NEAR(law.normal.zero_force_compression() / 5e-3, std::pow(0.9, 2.0 / 3.0) * 0.05, 1e-12);
-  // Defaults are the paper's set-up: Gamma-bar = 1, G_adh = 0.9.
+  const Adhesion adhesion = Adhesion::constant_group(10.0);
+  EXPECT_NEAR(adhesion.scale(), 60.0 * kPi, 1e-12);
+  const HertzAdhesiveCoulomb law = hertz(p, adhesion.scale());
+  EXPECT_NEAR(law.normal.zero_force_compression(adhesion.scale()) / 5e-3, 4.6e-2, 0.1e-2);
+  EXPECT_NEAR(law.normal.zero_force_compression(adhesion.scale()) / 5e-3, std::pow(0.9, 2.0 / 3.0) * 0.05, 1e-12);
+  EXPECT_NEAR(normal_force(law, 5e-3 - law.normal.zero_force_compression(adhesion.scale())), 0.0, 1e-9);
+  // Defaults are the paper's set-up: Gamma-bar = 1, and this law's adhesion G_adh = 0.9.
   const HertzAdhesiveParams d;
   EXPECT_NEAR(6.0 * kPi / (d.kn * std::pow(d.eps_bar * d.roughness, 1.5)), 1.0, 1e-12);
-  EXPECT_NEAR(d.f_adh / (6.0 * kPi), 0.9, 1e-12);
+  EXPECT_EQ(HertzAdhesive::default_adhesion, "constant");
+  EXPECT_DOUBLE_EQ(HertzAdhesive::default_g_adh, 0.9);
 }
 
 TEST(HertzAdhesive, RejectsBadParameters) {
@@ -157,5 +162,5 @@ TEST(HertzAdhesive, RejectsBadParameters) {
   p = simple();
   p.repulsion_onset = 1.5;
   EXPECT_THROW(HertzAdhesive{p}, InputError);
-  EXPECT_THROW(hertz_adhesive_from_groups(0.0, 1.0, 0.05, 5e-3), InputError);
+  EXPECT_THROW(hertz_from_groups(0.0, 0.05, 5e-3), InputError);
 }

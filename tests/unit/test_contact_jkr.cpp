@@ -22,8 +22,8 @@ const Vec3 axis = Vec3(0.3, -0.4, std::sqrt(0.75));
 double normal_force(const JkrAdhesion& law, double delta, double a_i, double a_j, PairHistory& h) {
   const PairGeometry g = PairGeometry::from((a_i + a_j - delta) * axis, a_i, a_j);
   PairForce f;
-  const NormalContact c = law.apply(g, RelativeMotion{}, f, h);
-  return c.active ? f.total_on_j().dot(g.n) : 0.0;
+  const NormalContact c = law.apply(g, RelativeMotion{Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()}, f, h);
+  return c.active ? c.force + f.total_on_j().dot(g.n) : 0.0;  // the Hertz part, and the adhesion it wrote
 }
 
 struct Sweep {
@@ -95,7 +95,7 @@ TEST(ContactJkr, TheComposedModelKeepsTheBondInThePairHistory) {
   PairHistory h;
   auto at = [&](double gap) {
     const PairGeometry g = PairGeometry::from((2.0 + gap) * axis, 1.0, 1.0);
-    return model(g, RelativeMotion{}, 1e-3, h).total_on_j().dot(g.n);
+    return model(g, RelativeMotion{Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()}, 1e-3, h).total_on_j().dot(g.n);
   };
   EXPECT_EQ(at(1e-3), 0.0);  // apart
   EXPECT_LT(at(-1e-4), 0.0);  // touched: bonded, in tension at small overlap

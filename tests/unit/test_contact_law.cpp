@@ -12,7 +12,8 @@ using namespace suspend::test;
 
 TEST(ContactLaw, ComposedLawAddsSurfaceForcesOnTopOfTheContact) {
   ComposedLaw<LinearSpringCoulomb> composed;
-  composed.contact.normal.p = {1.0e4, 2.0e3, 0.0};
+  composed.contact.normal.p = {1.0e4};
+  composed.contact.kt = 2.0e3;
   composed.surface.repulsion = ElectrostaticRepulsion{{1.0, 0.02, 20.0}};
   composed.surface.attraction = VanDerWaals{};
   const ContactLaw law = composed;

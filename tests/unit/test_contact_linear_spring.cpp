@@ -14,7 +14,9 @@ using namespace suspend::test;
 namespace {
 LinearSpringCoulomb law(double kn, double kt, double gamma_n, double mu) {
   LinearSpringCoulomb l;
-  l.normal.p = {kn, kt, gamma_n};
+  l.normal.p = {kn};
+  l.kt = kt;
+  l.damping = NormalDamping::viscous(gamma_n);  // paper 000 eq. 4a's dashpot
   l.friction.p.mu = mu;
   l.validate();
   return l;

@@ -14,7 +14,8 @@ using namespace suspend::test;
 namespace {
 LinearSpringCoulombRolling law(double kr, double mu_r) {
   LinearSpringCoulombRolling l;
-  l.normal.p = {1.0e4, 2.0e3, 0.0};
+  l.normal.p = {1.0e4};
+  l.kt = 2.0e3;
   l.friction.p.mu = 1.0;
   l.rolling.p = {kr, mu_r};
   l.validate();

@@ -33,8 +33,6 @@ SimulationParams frictional_lubricated(double kn) {
   params.resistance.tolerance = 1e-12;
   LinearSpringCoulomb law;
   law.normal.p.kn = kn;
-  law.normal.p.kt = 2.0 / 7.0 * kn;
-  law.normal.p.gamma_n = 0.0;
   law.friction.p.mu = 1.0;
   params.contact = ComposedLaw<LinearSpringCoulomb>{law, {}};
   params.time_step.implicit_contacts = true;
@@ -219,8 +217,7 @@ TEST(ImplicitContacts, SlidingContactsTangentIsTheDerivativeOfTheCoulombCap) {
   const double kn = 1.0e4, kt = 2.0 / 7.0 * kn, mu = 0.5, V = 1.0, dt = 0.05;  // slip per step 2.9 F_max / k_t
   LinearSpringCoulomb law;
   law.normal.p.kn = kn;
-  law.normal.p.kt = kt;
-  law.normal.p.gamma_n = 0.0;
+  law.kt = kt;
   law.friction.p.mu = mu;
   const PairGeometry g = PairGeometry::from(Vec3(0.0, 0.0, 1.99), 1.0, 1.0);
   PairHistory h;

@@ -143,31 +143,38 @@ TEST(Checkpoint, RoundTripIsBitExact) {
   }
 }
 
-// The contact histories come back whole, the normal law's state (JKR's neck) included; a checkpoint written before
-// that slot existed (no contacts/normal_state) reads with zero states, and its checksum still holds.
-TEST(Checkpoint, ContactHistoriesWithTheirNormalStateRoundTrip) {
+// The contact histories come back whole, every scalar slot of the pair history included (JKR's neck, the twisting
+// stretch); a checkpoint written before a slot existed (no contacts/<slot>) reads with zeros there, and its checksum
+// still holds.
+TEST(Checkpoint, ContactHistoriesWithTheirScalarSlotsRoundTrip) {
   const std::string path = temp("checkpoint_contacts.h5");
   Checkpoint c = small_checkpoint(5, "physics");
-  c.state.contacts = {{0, 3, {Vec3(1e-3, 2e-3, 0.0), Vec3::Zero(), true, 0.0}},
-                      {1, 4, {Vec3::Zero(), Vec3(0.0, 5e-4, 0.0), true, 0.0421}}};
+  c.state.contacts = {{0, 3, {Vec3(1e-3, 2e-3, 0.0), Vec3::Zero(), true, 0.0, -2.5e-4}},
+                      {1, 4, {Vec3::Zero(), Vec3(0.0, 5e-4, 0.0), true, 0.0421, 0.0}}};
   write_checkpoint(path, c);
   const Checkpoint d = read_checkpoint(path, "physics");
   ASSERT_EQ(d.state.contacts.size(), 2u);
   for (std::size_t k = 0; k < 2; ++k) {
     EXPECT_EQ(d.state.contacts[k].history.tangential_stretch, c.state.contacts[k].history.tangential_stretch);
     EXPECT_EQ(d.state.contacts[k].history.rolling_stretch, c.state.contacts[k].history.rolling_stretch);
-    EXPECT_EQ(d.state.contacts[k].history.normal_state, c.state.contacts[k].history.normal_state);
+    for (const PairHistorySlot& slot : scalar_slots)
+      EXPECT_EQ(d.state.contacts[k].history.*slot.member, c.state.contacts[k].history.*slot.member) << slot.name;
   }
-  c.state.contacts[1].history.normal_state = 0.0;  // as before the slot: no state, and no dataset
-  write_checkpoint(path, c);
-  {
-    h5::File f = h5::File::open(path, true);
-    ASSERT_GE(H5Ldelete(f.id(), "contacts/normal_state", H5P_DEFAULT), 0);
+  for (const PairHistorySlot& slot : scalar_slots) {
+    Checkpoint before = c;  // as before the slot: no state, and no dataset
+    for (auto& e : before.state.contacts) e.history.*slot.member = 0.0;
+    write_checkpoint(path, before);
+    {
+      h5::File f = h5::File::open(path, true);
+      ASSERT_GE(H5Ldelete(f.id(), ("contacts/" + std::string(slot.name)).c_str(), H5P_DEFAULT), 0);
+    }
+    const Checkpoint old = read_checkpoint(path, "physics");
+    ASSERT_EQ(old.state.contacts.size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k) {
+      EXPECT_EQ(old.state.contacts[k].history.*slot.member, 0.0) << slot.name;
+      EXPECT_EQ(old.state.contacts[k].history.rolling_stretch, c.state.contacts[k].history.rolling_stretch);
+    }
   }
-  const Checkpoint old = read_checkpoint(path, "physics");
-  ASSERT_EQ(old.state.contacts.size(), 2u);
-  EXPECT_EQ(old.state.contacts[1].history.normal_state, 0.0);
-  EXPECT_EQ(old.state.contacts[1].history.rolling_stretch, c.state.contacts[1].history.rolling_stretch);
 }
 
 // A file that cannot even be created for lack of room (here a file size limit of zero, as a full disk) is an output

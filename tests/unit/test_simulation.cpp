@@ -96,9 +96,9 @@ TEST(Simulation, ContactsAreThePairsWithANormalContactForce) {
   HertzAdhesiveParams hp;
   hp.roughness = 5e-3;
   hp.kn = 1e6;
-  hp.f_adh = 1.0;
   SimulationParams params;
-  params.contact = ComposedLaw<HertzAdhesiveCoulomb>{{HertzAdhesive(hp), {{0.5}}}, {std::nullopt, VanDerWaals{}}};
+  params.contact = ComposedLaw<HertzAdhesiveCoulomb>{{HertzAdhesive(hp), {{0.5}}, {}, Adhesion::constant(1.0)},
+                                                     {std::nullopt, VanDerWaals{}}};
   const double h = hp.roughness;
   const auto st = state_of({{5, 5, 5}, {7 + 0.4 * h, 5, 5}, {5, 15, 5}, {5, 17.4 + 0.9 * h, 5}, {15, 5, 15},
                             {15, 5, 17 + 1.5 * h}, {25, 25, 25}},
