@@ -1,5 +1,6 @@
 #include "io/hydrodynamic_models.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "coupling/fcm_model.hpp"
@@ -23,7 +24,8 @@ const HydrodynamicModelEntry pairwise{
       return c.simulation.lubrication && c.simulation.resistance.lubrication.exact_relative
                  ? std::string("exact_relative lubrication")
                  : std::string();
-    }};
+    },
+    [](const Case&, const Vec3&, double) { return 0.0; }};
 
 // FCM with its sub-grid lubrication (coupling/fcm_model.hpp).
 const HydrodynamicModelEntry fcm{
@@ -54,7 +56,13 @@ const HydrodynamicModelEntry fcm{
       summary["fcm"] = {{"steps", steps}, {"stokes_solves", solves},
                         {"stokes_solves_per_step", steps > 0 ? static_cast<double>(solves) / steps : 0.0}};
     },
-    [](const Case& c) { return c.fcm.subgrid ? std::string("sub-grid correction") : std::string(); }};
+    [](const Case& c) { return c.fcm.subgrid ? std::string("sub-grid correction") : std::string(); },
+    [](const Case& c, const Vec3& box_lengths, double smallest_radius) {
+      const double h = c.fcm.grid_spacing > 0.0 ? c.fcm.grid_spacing : 0.5 * smallest_radius;
+      double nodes = 1.0;
+      for (int a = 0; a < 3; ++a) nodes *= std::ceil(box_lengths[a] / h);
+      return nodes;
+    }};
 }  // namespace
 
 const std::vector<HydrodynamicModelEntry>& hydrodynamic_models() {

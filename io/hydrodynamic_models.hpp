@@ -1,7 +1,7 @@
 // The hydrodynamic models a case can name (hydrodynamics.model): one entry each in hydrodynamic_models.cpp, with
 // what the rest of the program asks of a model by name: whether its overdamped solve can take implicit contact
 // springs, the refusals of what it cannot do, its keys in the resolved case, the simulation it builds, its block in
-// summary.json and which of its terms use the exact two-sphere tables. Adding a model is its HydrodynamicModel
+// summary.json, which of its terms use the exact two-sphere tables and the size of its grid. Adding a model is its HydrodynamicModel
 // (dem/hydrodynamic_model.hpp) plus its entry here (docs/architecture.md).
 #pragma once
 #include <yaml-cpp/yaml.h>
@@ -30,6 +30,8 @@ struct HydrodynamicModelEntry {
   void (*summarise)(const Simulation&, nlohmann::json& summary);
   // The terms that use the exact two-sphere tables with this case ("" when none).
   std::string (*exact_table_user)(const Case&);
+  // The nodes of its grid for a box of these sides (0 without a grid), for the memory estimate before a run.
+  double (*grid_nodes)(const Case&, const Vec3& box_lengths, double smallest_radius);
 };
 
 const std::vector<HydrodynamicModelEntry>& hydrodynamic_models();

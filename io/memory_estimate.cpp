@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/hydrodynamic_models.hpp"
 
 namespace suspend::io {
 
@@ -39,12 +40,7 @@ void refuse_what_cannot_fit(const Case& c, double particles, const Vec3& box_len
   if (memory_bytes <= 0.0)
     memory_bytes = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
   const double for_particles = particles * bytes_per_particle;
-  double nodes = 0.0;
-  if (c.hydrodynamics == "fcm") {
-    const double h = c.fcm.grid_spacing > 0.0 ? c.fcm.grid_spacing : 0.5 * smallest_radius;
-    nodes = 1.0;
-    for (int a = 0; a < 3; ++a) nodes *= std::ceil(box_lengths[a] / h);
-  }
+  const double nodes = hydrodynamic_model(c.hydrodynamics).grid_nodes(c, box_lengths, smallest_radius);
   const double for_grid = nodes * bytes_per_fcm_node;
   if (for_particles + for_grid <= memory_bytes) return;
   std::ostringstream m;
