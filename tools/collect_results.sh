@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Copies the campaign tables of the raw runs (ignored folder runs/) into results/phim/METHOD/ (the phi_m campaigns,
-# issue 34's boundary searches and FCM seed scatter, issue 36's boundary searches with the exact near field; issue
+# issue 34's boundary searches and FCM seed scatter, issue 36's boundary searches (pairwise with the exact near
+# field, FCM at mu_s 0.3 and 1 and at the low frictions, the 20 a_1 box, sigma* 0.5 and 0.3); issue
 # 40's normal-stress ensembles to results/normal_stress_functions/ and results/normal_stress_frictional/), fits them with `suspend phim` (all points, and phi >= 0.45 only as paper 004 does
 # for mu_s <= 0.1: METHOD/from_phi0.45/) and redraws the figures, so the committed results follow the campaigns as
 # they fill; a table already committed is fitted again with the current `suspend phim`.
@@ -22,7 +23,9 @@ for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise
     "pairwise_boundary_low_friction|pairwise_boundary_low_friction" \
     "pairwise_boundary_low_friction_low_stress|pairwise_boundary_low_friction_low_stress" \
     "pairwise_boundary_exact|pairwise_boundary_exact" "fcm_seed_scatter|fcm_seed_scatter" \
-    "pairwise_yield_stress|pairwise_yield_stress"; do
+    "fcm_boundary|fcm_boundary" "pairwise_boundary_exact_others|pairwise_boundary_exact_others" \
+    "pairwise_box20|pairwise_box20" "pairwise_low_stress|pairwise_low_stress" \
+    "fcm_boundary_low_friction|fcm_boundary_low_friction" "pairwise_yield_stress|pairwise_yield_stress"; do
   IFS='|' read -r name method <<< "$entry"
   out="$root/results/phim/$method"
   [ -f "$runs/$name/campaign.json" ] && copy_table "$runs/$name" "$out"
@@ -35,7 +38,7 @@ for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise
   fi
   (cd "$root" && "$suspend" phim "results/phim/$method" > "results/phim/$method/phim.txt")
   cat "$out/phim.txt"
-  [[ $method == pairwise_boundary* ]] && continue
+  [[ $method != pairwise && $method != fcm ]] && continue  # the boundary searches: no fits from phi 0.45
   # paper 004 fits mu_s <= 0.1 on phi >= 0.45 only, nearer phi_m (section III C)
   mkdir -p "$out/from_phi0.45"
   (cd "$root" && "$suspend" phim "results/phim/$method" --min-phi 0.45 -o "results/phim/$method/from_phi0.45" \

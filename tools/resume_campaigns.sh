@@ -5,8 +5,11 @@
 # their tables and fits to results/phim/NAME as they fill; issue 40's normal-stress ensemble
 # (runs/normal_stress_functions, cases/validation/normal_stress_functions.yaml: singular against exact two-sphere
 # functions on the frictionless case, and runs/normal_stress_frictional: paper 000's case FR at phi 0.45-0.56); issue 36's boundary searches at mu_s 0.3 and 1 with the exact two-sphere
-# functions (runs/pairwise_boundary_exact, cases/phim/pairwise_boundary_exact.yaml) and the yield stress by creep
-# bisected in sigma* (runs/pairwise_yield_stress, cases/phim/pairwise_yield_stress.yaml);
+# functions (runs/pairwise_boundary_exact, cases/phim/pairwise_boundary_exact.yaml), then in the issue's order of
+# value FCM at mu_s 0.3 and 1 (fcm_boundary), the yield stress by creep bisected in sigma*
+# (pairwise_yield_stress), the exact near field at mu_s 0, 0.1 and 0.5 (pairwise_boundary_exact_others), the
+# (20 a_1)^3 box (pairwise_box20), sigma* 0.5 and 0.3 (pairwise_low_stress) and FCM at the low frictions
+# (fcm_boundary_low_friction), each from cases/phim/NAME.yaml into runs/NAME;
 # issue 35's accuracy ensembles of the default step (runs/step_frictionless, runs/step_ensemble: the packings of
 # each case run by the current engine, set against the same campaigns run by the engine before issue 35,
 # runs/step_*_before with a binary built at 2fbb67f, and runs/step_particles: the former step rule with the current
@@ -45,7 +48,12 @@ campaigns=(
   "normal_stress_functions|$root/cases/validation/normal_stress_functions.yaml|$root/results/normal_stress_functions/campaign.json"
   "normal_stress_frictional|$root/cases/validation/normal_stress_frictional.yaml|$root/results/normal_stress_frictional/campaign.json"
   "pairwise_boundary_exact|$root/cases/phim/pairwise_boundary_exact.yaml|$root/results/phim/pairwise_boundary_exact/campaign.json"
+  "fcm_boundary|$root/cases/phim/fcm_boundary.yaml|$root/results/phim/fcm_boundary/campaign.json"
   "pairwise_yield_stress|$root/cases/phim/pairwise_yield_stress.yaml|$root/results/phim/pairwise_yield_stress/campaign.json"
+  "pairwise_boundary_exact_others|$root/cases/phim/pairwise_boundary_exact_others.yaml|$root/results/phim/pairwise_boundary_exact_others/campaign.json"
+  "pairwise_box20|$root/cases/phim/pairwise_box20.yaml|$root/results/phim/pairwise_box20/campaign.json"
+  "pairwise_low_stress|$root/cases/phim/pairwise_low_stress.yaml|$root/results/phim/pairwise_low_stress/campaign.json"
+  "fcm_boundary_low_friction|$root/cases/phim/fcm_boundary_low_friction.yaml|$root/results/phim/fcm_boundary_low_friction/campaign.json"
   "step_frictionless|$root/cases/validation/step_control_ensemble_frictionless.yaml|$root/results/step_control/frictionless_after/campaign.json"
   "step_ensemble|$root/cases/validation/step_control_ensemble.yaml|$root/results/step_control/adhesive_after/campaign.json"
   "step_particles|$root/cases/validation/step_control_ensemble_particles.yaml|$root/results/step_control/adhesive_particles/campaign.json"
