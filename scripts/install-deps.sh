@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config git ccache
           libeigen3-dev libfftw3-dev libhdf5-dev libyaml-cpp-dev libcli11-dev
           libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libopenmpi-dev openmpi-bin
-          python3 python3-numpy python3-h5py python3-matplotlib python3-gsd python3-yaml)
+          python3 python3-numpy python3-scipy python3-h5py python3-matplotlib python3-gsd python3-yaml)
 if [[ ${1:-} == --movie ]]; then packages+=(ffmpeg); fi
 missing=()
 for p in "${packages[@]}"; do
