@@ -54,6 +54,12 @@ fit_boundaries() {  # NAME TABLE_FOLDER...
   (cd "$root" && /usr/bin/python3 tools/constraint_fit.py "${tables[@]}" --json "results/phim/constraint_fit/$name.json" \
     > "results/phim/constraint_fit/$name.txt") || true
 }
+# Issue 36, item 5: shear banding in the flowing points of the boundary searches (from the raw runs' snapshots).
+for name in pairwise_boundary_exact pairwise_low_stress fcm_boundary pairwise_box20; do
+  [ -d "$runs/$name/points" ] && [ -d "$root/results/phim/$name" ] || continue
+  /usr/bin/python3 "$root/tools/banding_check.py" "$runs/$name" --suspend "$suspend" \
+    > "$root/results/phim/$name/banding.txt" 2>&1 || true
+done
 mkdir -p "$root/results/phim/constraint_fit"
 fit_boundaries pairwise_singular pairwise_boundary pairwise_boundary_low_friction pairwise_boundary_low_friction_low_stress
 fit_boundaries pairwise_exact pairwise_boundary_exact pairwise_boundary_exact_others pairwise_low_stress
