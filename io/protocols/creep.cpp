@@ -1,5 +1,6 @@
 // Step-stress creep (flow.type creep): Sigma_xy stepped to shear_stress S at step_time t_1 (default 0), from
-// initial_stress S_0 (default 0) before it; a step ends on t_1. The strain gamma(t) is the series' strain column;
+// initial_stress S_0 (default 0) before it; a step ends on t_1. The strain gamma(t) is the series' strain column, with
+// rows evenly in log(t - t_1) as well as in strain;
 // summary.json gains `creep`: the compliance J(t) = (gamma(t) - gamma(t_1)) / S at about 30 times spaced evenly in
 // log(t - t_1) (from rest, or from a sample arrested under S_0, the creep compliance; a sample that flowed under S_0
 // keeps that flow in it), and eta_r = S / the mean shear rate of the averaging window (a flowing sample; below the
@@ -31,6 +32,14 @@ class Creep : public Protocol {
   }
   double largest_target(const Flow& flow) const override { return std::max(initial_stress, flow.shear_stress); }
   double next_event_time(double time) const override { return before_step(time) ? step_time : never; }
+  // Rows evenly in log(t - t_1) after the step besides those in strain (36 a decade: the interval is a quarter of
+  // the decade's power of ten), so J(t) is sampled from the first steps on and through an arrest, where the strain
+  // stops and writes no rows.
+  double series_time_interval(double time) const override {
+    const double since = time - step_time;
+    if (before_step(time) || !(since > 0.0)) return never;
+    return 0.25 * std::pow(10.0, std::floor(std::log10(since)));
+  }
 
   void write(const Flow& flow, YAML::Node& keys) const override {
     Protocol::write(flow, keys);
