@@ -44,7 +44,6 @@ for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise
   (cd "$root" && "$suspend" phim "results/phim/$method" --min-phi 0.45 -o "results/phim/$method/from_phi0.45" \
     > "results/phim/$method/from_phi0.45/phim.txt")
 done
-/usr/bin/python3 "$root/tools/phim_figures.py" "$root/results/phim"
 # Issue 36: the constraint-rheology boundary (phi_alp) per near-field model and method, from the boundary tables.
 fit_boundaries() {  # NAME TABLE_FOLDER...
   local name=$1 tables=()
@@ -64,6 +63,7 @@ mkdir -p "$root/results/phim/constraint_fit"
 fit_boundaries pairwise_singular pairwise_boundary pairwise_boundary_low_friction pairwise_boundary_low_friction_low_stress
 fit_boundaries pairwise_exact pairwise_boundary_exact pairwise_boundary_exact_others pairwise_low_stress
 fit_boundaries fcm fcm_boundary fcm_boundary_low_friction
+/usr/bin/python3 "$root/tools/phim_figures.py" "$root/results/phim"
 # Issue 40's normal-stress ensemble: its table, and the means of singular against exact_relative per phi.
 if [ -f "$runs/normal_stress_functions/campaign.json" ]; then
   out="$root/results/normal_stress_functions"

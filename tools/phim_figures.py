@@ -25,11 +25,17 @@ PAPER_ALPHA = (0.65, 1.0)  # paper 004's Maron-Pierce prefactors (Fig. 32, resul
 # A Maron-Pierce fit with chi^2/dof above this is drawn open in Fig. 15: the errors are already inflated by
 # sqrt(chi^2/dof), but above ~10 the misfit is systematic (the data curve away from the form), not noise.
 POOR_FIT_CHI2 = 10.0
-# The methods drawn. The boundary searches (folders results/phim/pairwise_boundary*, three seeds per phi, issue 34)
-# are drawn in Fig. 15 as searched brackets that replace the one-seed pairwise result of the same group.
+# The methods drawn. The boundary searches (three seeds per phi, issues 34 and 36) are drawn in Fig. 15 as searched
+# brackets that replace the one-seed result of the same method and group; each kind of search has its hatch and a
+# small shift in sigma*. Folder prefix (the first that matches) -> (method, label, hatch, shift).
 METHOD_NAME = {"pairwise": "pairwise", "fcm": "FCM"}
-SEARCH_PREFIX = "pairwise_boundary"
-SEARCH_OF = "pairwise"  # the method whose groups a search replaces
+SEARCHES = [
+    ("pairwise_boundary_exact", ("pairwise", "pairwise, exact near field", "\\\\\\", 0.95)),
+    ("pairwise_low_stress", ("pairwise", "pairwise, exact near field", "\\\\\\", 0.95)),
+    ("pairwise_box20", ("pairwise", "pairwise, exact, $(20 a_1)^3$ box", "xxxx", 0.90)),
+    ("pairwise_boundary", ("pairwise", "pairwise, singular near field", "/////", 1.0)),
+    ("fcm_boundary", ("fcm", "FCM", "....", 1.06)),
+]
 SEARCH_DRAWN_WIDTH = 0.01  # drawn (replacing the one-seed group) once converged: the searches' tolerance
 METHOD_STYLE = {"pairwise": dict(marker="o", linestyle="-", fillstyle="full"),
                 "fcm": dict(marker="s", linestyle="--", fillstyle="none")}
@@ -58,9 +64,17 @@ def usage(message=None):
     sys.exit(2)
 
 
+def search_kind(name):
+    for prefix, kind in SEARCHES:
+        if name.startswith(prefix):
+            return kind
+    return None
+
+
 def load(results):
     """The methods' (campaign table, phim.json) by folder name, and the boundary searches' groups (phim.json fits of
-    every results/phim/pairwise_boundary* folder, merged)."""
+    every search folder of SEARCHES, each with its kind under "search"), and the constraint-model fits
+    (constraint_fit/*.json, tools/constraint_fit.py) by name."""
     methods, searched = {}, []
     for name in sorted(os.listdir(results)):
         folder = os.path.join(results, name)
@@ -70,10 +84,21 @@ def load(results):
         if name in METHOD_NAME:
             with open(table) as t, open(fits) as f:
                 methods[name] = (json.load(t), json.load(f))
-        elif name.startswith(SEARCH_PREFIX):
+        elif search_kind(name):
             with open(fits) as f:
-                searched += json.load(f)["fits"]
+                searched += [dict(g, search=search_kind(name)) for g in json.load(f)["fits"]]
     return methods, searched
+
+
+def load_constraint_fits(results):
+    folder = os.path.join(results, "constraint_fit")
+    fits = {}
+    if os.path.isdir(folder):
+        for name in sorted(os.listdir(folder)):
+            if name.endswith(".json"):
+                with open(os.path.join(folder, name)) as f:
+                    fits[name[:-5]] = json.load(f)
+    return fits
 
 
 def group_sigma(point):
@@ -146,18 +171,18 @@ def axis_break(ax, x):
                 zorder=4)
 
 
-def searched_bracket(ax, x, b, fractions, seeds, colour):
+def searched_bracket(ax, x, b, fractions, seeds, colour, hatch="/////"):
     """A searched bracket: a hatched bar from the densest phi that a majority of seeds flowed at to the least dense
     that a majority jammed at, each end labelled with flowed/seeds."""
     from matplotlib.patches import Rectangle
     ax.add_patch(Rectangle((x / 1.07, b[0]), x * (1.07 - 1 / 1.07), b[1] - b[0], facecolor="white", edgecolor=colour,
-                           hatch="/////", linewidth=1.2, zorder=3))
+                           hatch=hatch, linewidth=1.2, zorder=3))
     for phi, fraction, n, va in ((b[0], fractions[0], seeds[0], "top"), (b[1], fractions[1], seeds[1], "bottom")):
         ax.annotate("%d/%d" % (round(fraction * n), n), (x * 1.08, phi), fontsize=5.5, color=colour, va=va,
                     ha="left", zorder=5)
 
 
-def figure_15(methods, out, searched=()):
+def figure_15(methods, out, searched=(), constraint=None):
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
@@ -165,9 +190,9 @@ def figure_15(methods, out, searched=()):
     # a search still running has a wide bracket: not yet a result
     searched = [f for f in searched
                 if f.get("bracket") and f["bracket"][1] - f["bracket"][0] <= SEARCH_DRAWN_WIDTH + 1e-9]
-    replaced = {(f["mu_s"], sigma_of(f)) for f in searched}
+    replaced = {(f["search"][0], f["mu_s"], sigma_of(f)) for f in searched}
     drawn = {method: [(f, d) for f in fits["fits"] if (d := drawn_phi_m(f))
-                      and not (method == SEARCH_OF and (f["mu_s"], sigma_of(f)) in replaced)]
+                      and (method, f["mu_s"], sigma_of(f)) not in replaced]
              for method, (_, fits) in methods.items()}
     shown = [pair for pairs in drawn.values() for pair in pairs]
     shown += [(f, (0.5 * sum(f["bracket"]), 0.5 * (f["bracket"][1] - f["bracket"][0]), tuple(f["bracket"])))
@@ -209,13 +234,33 @@ def figure_15(methods, out, searched=()):
                             markeredgewidth=1.3, zorder=4)
             handles.append(Line2D([], [], color=colour, marker=style["marker"], linestyle=style["linestyle"],
                                   label="%s, $\\mu_s$ = %g" % (method_name(method), mu)))
-    for mu in sorted({f["mu_s"] for f in searched}):
-        colour = mu_colour(mu, all_mu)
-        for f in (f for f in searched if f["mu_s"] == mu):
-            x = x_inf if sigma_of(f) == math.inf else sigma_of(f)
-            searched_bracket(ax, x, f["bracket"], f["bracket_flowing_fraction"], f["bracket_seeds"], colour)
-        handles.append(Patch(facecolor="white", edgecolor=colour, hatch="/////",
-                             label="pairwise, $\\mu_s$ = %g, searched:\nflowed/seeds at each end" % mu))
+    for kind in sorted({f["search"] for f in searched}, key=lambda k: (method_order(k[0]), k[1])):
+        _, label, hatch, shift = kind
+        for mu in sorted({f["mu_s"] for f in searched if f["search"] == kind}):
+            colour = mu_colour(mu, all_mu)
+            for f in (f for f in searched if f["mu_s"] == mu and f["search"] == kind):
+                x = (x_inf if sigma_of(f) == math.inf else sigma_of(f)) * shift
+                searched_bracket(ax, x, f["bracket"], f["bracket_flowing_fraction"], f["bracket_seeds"], colour,
+                                 hatch)
+            handles.append(Patch(facecolor="white", edgecolor=colour, hatch=hatch,
+                                 label="%s, $\\mu_s$ = %g, searched:\nflowed/seeds at each end" % (label, mu)))
+    # The constraint-rheology boundary of each near-field model and method (tools/constraint_fit.py), where it fits.
+    for name, result in sorted((constraint or {}).items()):
+        for row in result.get("frictions", []):
+            # kappa = 1 or free, whichever fits better with every parameter inside its bounds
+            usable = [f for f in (row.get("fit"), row.get("fit_free_kappa"))
+                      if f and "error" not in f and not f.get("at_bound") and f.get("dof", 0) > 0]
+            if not usable or row["mu_s"] not in all_mu:
+                continue
+            f = min(usable, key=lambda q: q["chi2"] / q["dof"])
+            import numpy as np
+            s = np.logspace(math.log10(0.25), math.log10(finite_max), 80)
+            a = -np.expm1(-np.power(f["sigma_a"] / s, f["kappa"]))
+            ax.plot(s, f["phi_alp"] * a + f["phi_mu"] * (1 - a), color=mu_colour(row["mu_s"], all_mu), linewidth=0.8,
+                    linestyle=(0, (1, 1)) if name.startswith("fcm") else "-", alpha=0.7, zorder=1)
+    if constraint:
+        handles.append(Line2D([], [], color="0.3", linewidth=0.8, alpha=0.7,
+                              label="constraint model fit:\n$\\phi_{alp} a + \\phi_\\mu (1 - a)$"))
     if any_poor:
         handles.append(Line2D([], [], color="0.3", marker="o", markerfacecolor="white", linestyle="none",
                               label="open: Maron-Pierce fit with\n$\\chi^2/\\mathrm{dof} > %g$" % POOR_FIT_CHI2))
@@ -234,9 +279,11 @@ def figure_15(methods, out, searched=()):
     highest = max([d[2][1] if d[2] else d[0] + d[1] for _, d in shown] + [0.67])
     ax.set_ylim(lowest - 0.01, highest + 0.01)
     ax.set_xscale("log")
-    ax.set_xlim(0.5, x_inf * 1.5)
+    lowest_sigma = min([sigma_of(f) for f, _ in shown] + [0.5])
+    ax.set_xlim(0.8 * lowest_sigma, x_inf * 1.5)
     ax.set_xticks([1, 10, x_inf])
-    ax.set_xticks([t for t in (0.5, 0.6, 0.7, 0.8, 0.9, 2, 3, 4, 5, 6, 7, 8, 9) if t > 0.5], minor=True)
+    ax.set_xticks([t for t in (0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 2, 3, 4, 5, 6, 7, 8, 9) if t > 0.8 * lowest_sigma],
+                  minor=True)
     ax.set_xticklabels(["1", "10", "$\\infty$"])
     axis_break(ax, math.sqrt(finite_max * x_inf))
     ax.set_xlabel(SIGMA_LABEL)
@@ -411,7 +458,7 @@ def main(argv):
         usage("no METHOD/campaign.json with METHOD/phim.json under '%s' (run suspend sweep, then suspend phim)" % results)
     out = out or os.path.join(results, "figures")
     os.makedirs(out, exist_ok=True)
-    figure_15(methods, out, searched)
+    figure_15(methods, out, searched, load_constraint_fits(results))
     figure_11(methods, out)
     figure_reduced(methods, out)
     figure_22(methods, out)
