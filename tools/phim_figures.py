@@ -5,7 +5,8 @@ between the densest flowing and the least dense jammed point instead, and no fit
 POOR_FIT_CHI2 open; the boundary searches' brackets hatched, with flowed/seeds at each end, in place of the one-seed
 group they replace), Fig. 11 (eta_r against phi per sigma*, with the Maron-Pierce fits, dashed where a jammed point
 contradicts them), Fig. 14 (eta_r against phi/phi_m, with the paper's Maron-Pierce master curve), Figs. 16-19
-(contact-stress ratios against phi/phi_m) and Fig. 22 (mu(J)). Figure text cites paper 004 as "Orsi et al.".
+(contact-stress ratios against phi/phi_m), Fig. 22 (mu(J)) and Fig. 32 (alpha(sigma*) where the fits hold); Fig. 15
+also carries the constraint-model curves and the yield stresses measured by creep. Figure text cites paper 004 as "Orsi et al.".
 
 usage: tools/phim_figures.py RESULTS_DIR [--out FIGURE_DIR]
 
@@ -182,7 +183,7 @@ def searched_bracket(ax, x, b, fractions, seeds, colour, hatch="/////"):
                     ha="left", zorder=5)
 
 
-def figure_15(methods, out, searched=(), constraint=None):
+def figure_15(methods, out, searched=(), constraint=None, yield_stress=None):
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
@@ -258,6 +259,14 @@ def figure_15(methods, out, searched=(), constraint=None):
             a = -np.expm1(-np.power(f["sigma_a"] / s, f["kappa"]))
             ax.plot(s, f["phi_alp"] * a + f["phi_mu"] * (1 - a), color=mu_colour(row["mu_s"], all_mu), linewidth=0.8,
                     linestyle=(0, (1, 1)) if name.startswith("fcm") else "-", alpha=0.7, zorder=1)
+    for mu, phi, lo, hi in yield_stress or []:
+        if mu in all_mu:
+            ax.plot([lo, hi], [phi, phi], color=mu_colour(mu, all_mu), linewidth=2.5, solid_capstyle="butt", zorder=4)
+            ax.plot([lo, hi], [phi, phi], color=mu_colour(mu, all_mu), marker="|", markersize=8, linestyle="none",
+                    zorder=4)
+    if yield_stress:
+        handles.append(Line2D([], [], color="0.3", linewidth=2.5, marker="|", markersize=8,
+                              label="yield stress by creep at fixed $\\phi$:\narrested to flowed $\\sigma^*$"))
     if constraint:
         handles.append(Line2D([], [], color="0.3", linewidth=0.8, alpha=0.7,
                               label="constraint model fit:\n$\\phi_{alp} a + \\phi_\\mu (1 - a)$"))
@@ -407,6 +416,67 @@ def figure_reduced(methods, out):
         plt.close(fig)
 
 
+def figure_32(methods, searched, out):
+    """Paper 004 Fig. 32: the Maron-Pierce prefactor alpha(sigma*) of every fit that holds (no jammed point below its
+    phi_m, chi^2/dof at most POOR_FIT_CHI2), per method and friction, against the paper's 0.65-1."""
+    import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
+    rows = []
+    for method, (_, fits) in methods.items():
+        rows += [(method, f) for f in fits["fits"]]
+    rows += [(f["search"][0], f) for f in searched]
+    rows = [(m, f) for m, f in rows if f.get("alpha") is not None and f.get("result") != "bracket"
+            and not poor_fit(f) and sigma_of(f) < math.inf]
+    if not rows:
+        return
+    all_mu = sorted({f["mu_s"] for _, f in rows})
+    fig, ax = plt.subplots(figsize=(5.6, 4.0))
+    for method, f in rows:
+        style = METHOD_STYLE.get(method, dict(marker="^"))
+        ax.errorbar([sigma_of(f) * METHOD_SHIFT.get(method, 1.0)], [f["alpha"]], yerr=[f["alpha_err"]],
+                    color=mu_colour(f["mu_s"], all_mu), marker=style["marker"], linestyle="none", capsize=3)
+    ax.axhspan(*PAPER_ALPHA, color="0.9", zorder=0)
+    handles = [Line2D([], [], color=mu_colour(mu, all_mu), marker="o", linestyle="none", label="$\\mu_s$ = %g" % mu)
+               for mu in all_mu]
+    handles += [Line2D([], [], color="0.3", marker=METHOD_STYLE[m]["marker"], linestyle="none",
+                       label=method_name(m)) for m in METHOD_STYLE if any(r[0] == m for r in rows)]
+    handles.append(Line2D([], [], color="0.85", linewidth=8, label="%s: %g$-$%g" % ((PAPER,) + PAPER_ALPHA)))
+    ax.set_xscale("log")
+    ax.set_xlabel(SIGMA_LABEL)
+    ax.set_ylabel("$\\alpha(\\sigma^*)$ (Maron-Pierce prefactor)")
+    ax.legend(handles=handles, fontsize=7.5, frameon=False)
+    save(fig, out, "fig32_alpha_sigma_star")
+    plt.close(fig)
+
+
+def yield_stress_brackets(results):
+    """The yield stress by creep bisected in sigma* at fixed phi (results/phim/pairwise_yield_stress): per (mu_s, phi)
+    the largest stress at which most seeds arrested and the smallest at which most flowed."""
+    path = os.path.join(results, "pairwise_yield_stress", "campaign.json")
+    if not os.path.isfile(path):
+        return []
+    with open(path) as f:
+        points = json.load(f)["points"]
+    levels = {}
+    for p in points:
+        if p.get("status") not in ("done", "jammed"):
+            continue
+        c = p["case"]
+        key = (c["mu_s"], c["phi"])
+        sigma = c["shear_stress"] / c["g_adh"] if c.get("g_adh") else None
+        if sigma is None:
+            continue
+        tally = levels.setdefault(key, {}).setdefault(sigma, [0, 0])
+        tally[0 if p["status"] == "jammed" else 1] += 1
+    out = []
+    for (mu, phi), tallies in sorted(levels.items()):
+        arrested = [s for s, (j, f) in tallies.items() if j > f]
+        flowed = [s for s, (j, f) in tallies.items() if f > j]
+        if arrested and flowed:
+            out.append((mu, phi, max(arrested), min(flowed)))
+    return out
+
+
 def figure_22(methods, out):
     import matplotlib.pyplot as plt
     rows = reduced_points(methods)
@@ -458,7 +528,8 @@ def main(argv):
         usage("no METHOD/campaign.json with METHOD/phim.json under '%s' (run suspend sweep, then suspend phim)" % results)
     out = out or os.path.join(results, "figures")
     os.makedirs(out, exist_ok=True)
-    figure_15(methods, out, searched, load_constraint_fits(results))
+    figure_15(methods, out, searched, load_constraint_fits(results), yield_stress_brackets(results))
+    figure_32(methods, searched, out)
     figure_11(methods, out)
     figure_reduced(methods, out)
     figure_22(methods, out)
