@@ -48,6 +48,15 @@ Case with_contact(const std::string& contact) {
   apply_override(root, "contact=" + contact);
   return parse_case(root, "");
 }
+// The message a contact block is refused with ("" when it is accepted).
+std::string error_of(const std::string& contact) {
+  try {
+    with_contact(contact);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
 }  // namespace
 
 TEST(ContactComposition, HertzWithCriticalLoadIsFrictionlessBelowTheThresholdOnTheElasticLoad) {
@@ -222,14 +231,6 @@ TEST(ContactSpeciesPairs, CaseReadsAndWritesSpeciesPairs) {
 }
 
 TEST(ContactSpeciesPairs, RefusesWhatASpeciesPairCannotChange) {
-  auto error_of = [](const std::string& contact) -> std::string {
-    try {
-      with_contact(contact);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  };
   std::string e = error_of("{law: hertz_adhesive, species_pairs: [{species: [0, 2], mu_s: 0.1}]}");
   EXPECT_NE(e.find("contact.species_pairs[0].species"), std::string::npos) << e;
   e = error_of("{law: hertz_adhesive, species_pairs: [{species: [0, 1], law: linear_spring}]}");
@@ -282,14 +283,6 @@ TEST(ContactSubModels, EachChoiceReadsAndWritesItsOwnKeys) {
 }
 
 TEST(ContactSubModels, RefusesChoicesThatDoNotCompose) {
-  auto error_of = [](const std::string& contact) -> std::string {
-    try {
-      with_contact(contact);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  };
   std::string e = error_of("{law: jkr, adhesion: constant}");
   EXPECT_NE(e.find("contact.adhesion: law: jkr carries its own adhesion"), std::string::npos) << e;
   e = error_of("{law: linear_spring, damping: viscoelastic, gamma_n: 1}");
