@@ -14,11 +14,13 @@ using std::numbers::pi;
 
 namespace {
 
-SimulationParams inertial(double stokes_number, double kn, double dt) {
+SimulationParams inertial(double stokes_number, double kn, double dt, NormalDamping damping = {}) {
   SimulationParams params;
   params.integrator = Integrator::inertial;
   params.stokes_number = stokes_number;
-  params.contact = ComposedLaw<ContactModel<SoftRepulsion>>{{SoftRepulsion{{kn}}}, {}};
+  ContactModel<SoftRepulsion> contact{SoftRepulsion{{kn}}};
+  contact.damping = damping;
+  params.contact = ComposedLaw<ContactModel<SoftRepulsion>>{contact, {}};
   params.time_step.mode = TimeStepParams::Mode::fixed;
   params.time_step.fixed = dt;
   params.max_overlap = 0.5;
@@ -26,14 +28,18 @@ SimulationParams inertial(double stokes_number, double kn, double dt) {
 }
 
 // Largest deviation from the exact ring-down over t <= 0.2 (or until the spheres part), over delta0.
-double ring_down_error(double dt) {
-  // Two unit spheres overlapping by delta, side by side in z (same y, so the shear does not separate them):
-  //   m delta'' = -2 k delta - 6 pi delta'   (each sphere: m z'' = k delta - 6 pi z', delta = 2 - separation)
-  // from rest: delta = delta0 e^{-ct/2} (cos wd t + c/(2 wd) sin wd t), c = 6 pi / m, wd^2 = 2k/m - c^2/4.
+double ring_down_error(double dt, NormalDamping damping = {}) {
+  // Two unit spheres overlapping by delta, side by side in z (same y, so the shear does not separate them), with a
+  // contact dashpot gamma (the damping sub-model: gamma_n, or A k_n for the viscoelastic one on a linear spring):
+  //   m delta'' = -2 k delta - (6 pi + 2 gamma) delta'   (each sphere: m z'' = k delta + gamma delta' - 6 pi z',
+  //   delta = 2 - separation); from rest: delta = delta0 e^{-ct/2} (cos wd t + c/(2 wd) sin wd t),
+  //   c = (6 pi + 2 gamma) / m, wd^2 = 2k/m - c^2/4.
   const double st = 1.0, kn = 100.0, delta0 = 0.05;
-  const double m = st * 4.0 / 3.0 * pi, c = 6 * pi / m, wd = std::sqrt(2 * kn / m - c * c / 4);
+  const double gamma = damping.model == NormalDamping::Model::viscoelastic ? damping.coefficient * kn
+                                                                           : damping.coefficient;
+  const double m = st * 4.0 / 3.0 * pi, c = (6 * pi + 2 * gamma) / m, wd = std::sqrt(2 * kn / m - c * c / 4);
   Simulation sim(state_of({{10, 10, 10}, {10, 10, 12 - delta0}}, {1.0, 1.0}), Box(20, 20, 20),
-                         inertial(st, kn, dt));
+                         inertial(st, kn, dt, damping));
   double worst = 0.0;
   for (int step = 1; step * dt <= 0.2; ++step) {
     sim.advance();
@@ -55,6 +61,16 @@ TEST(Inertial, OverlappingPairRingsDownAsTheDampedOscillatorItObeys) {
   const double coarse = ring_down_error(1e-4), fine = ring_down_error(5e-5);
   EXPECT_LT(coarse, 1e-4);
   EXPECT_NEAR(coarse / fine, 2.0, 0.1);
+}
+
+TEST(Inertial, TheContactDashpotAddsToTheDragAsTheDampedOscillatorSays) {
+  // The damping sub-model in the engine: with gamma_n = 4 (and the viscoelastic model at A k_n = 4) the ring-down is
+  // the damped oscillator's with c = (6 pi + 2 gamma) / m, to the scheme's first order in dt.
+  for (const NormalDamping& d : {NormalDamping::viscous(4.0), NormalDamping::viscoelastic(4.0 / 100.0)}) {
+    const double coarse = ring_down_error(1e-4, d), fine = ring_down_error(5e-5, d);
+    EXPECT_LT(coarse, 2e-4) << d.name();
+    EXPECT_NEAR(coarse / fine, 2.0, 0.15) << d.name();
+  }
 }
 
 TEST(Inertial, SmallStokesNumberRecoversTheOverdampedSeparation) {
