@@ -125,12 +125,13 @@ const Packed& packed() {
 }
 
 struct ForceLoop {
-  ComposedLaw<LinearSpringCoulomb> law;  // paper 000 Table 1: k-hat 4e5, k_t/k_n 2/7, mu_C = 1
+  // paper 000 Table 1: k-hat 4e5, k_t/k_n 2/7, gamma_n gammadot / k_n 1e-7 (the viscous damping sub-model), mu_C = 1
+  ComposedLaw<LinearSpringCoulomb> law;
   std::vector<PairHistory> history;
   PairSums sums;
   std::vector<Vec3> pair_force;
   std::vector<PairSums> local;
-  explicit ForceLoop(std::size_t pairs) : history(pairs) {}
+  explicit ForceLoop(std::size_t pairs) : history(pairs) { law.contact.damping = NormalDamping::viscous(1.0e-7 * 4.0e5); }
   void run(const Packed& c) {
     accumulate_pair_forces(c.active, c.p, c.box.length().y(), law, 1e-5, history, sums, pair_force, local);
   }
