@@ -51,7 +51,8 @@ struct ContactModel {
   using rolling_type = Rolling;
   static constexpr bool has_friction = !std::is_same_v<Friction, NoFriction>;
   static constexpr bool has_rolling = !std::is_same_v<Rolling, NoRolling>;
-  static constexpr bool has_history = has_friction || has_rolling || NormalWithHistory<Normal>;  // or twisting
+  // History kept by the types alone; an active twisting (a value) keeps it as well, at run time.
+  static constexpr bool has_history = has_friction || has_rolling || NormalWithHistory<Normal>;
 
   Normal normal;
   Friction friction{};
