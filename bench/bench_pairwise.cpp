@@ -131,7 +131,9 @@ struct ForceLoop {
   PairSums sums;
   std::vector<Vec3> pair_force;
   std::vector<PairSums> local;
-  explicit ForceLoop(std::size_t pairs) : history(pairs) { law.contact.damping = NormalDamping::viscous(1.0e-7 * 4.0e5); }
+  explicit ForceLoop(std::size_t pairs) : history(pairs) {
+    law.contact.damping = NormalDamping::viscous(1.0e-7 * 4.0e5);
+  }
   void run(const Packed& c) {
     accumulate_pair_forces(c.active, c.p, c.box.length().y(), law, 1e-5, history, sums, pair_force, local);
   }

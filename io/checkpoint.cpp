@@ -221,7 +221,8 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& fingerpri
     for (const PairHistorySlot& slot : scalar_slots) {
       const std::string name = "contacts/" + std::string(slot.name);
       scalars.push_back(h5::exists(id, name) ? h5::read_doubles(id, name) : std::vector<double>(pairs.size() / 2, 0.0));
-      if (2 * scalars.back().size() != pairs.size()) throw InputError(path + ": " + name + " does not match contacts/pairs");
+      if (2 * scalars.back().size() != pairs.size())
+        throw InputError(path + ": " + name + " does not match contacts/pairs");
     }
     for (std::size_t k = 0; k < pairs.size() / 2; ++k) {
       const std::int64_t i = pairs[2 * k], j = pairs[2 * k + 1];

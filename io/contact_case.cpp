@@ -60,7 +60,8 @@ ContactLaw with_rolling(SchemaReader& r, const Normal& normal, const Friction& f
   SchemaReader rr = r.child(block);
   const RollingResistance rolling = RollingResistance::read(rr, normal.secant_stiffness() / 100.0);
   rr.finish();
-  ContactModel<Normal, Friction, RollingResistance> cr{normal, friction, rolling, c.adhesion, c.damping, c.twisting, c.kt};
+  ContactModel<Normal, Friction, RollingResistance> cr{normal,    friction,   rolling, c.adhesion,
+                                                       c.damping, c.twisting, c.kt};
   return ComposedLaw<ContactModel<Normal, Friction, RollingResistance>>{cr, s};
 }
 

@@ -1,8 +1,8 @@
 // The hydrodynamic models a case can name (hydrodynamics.model): one entry each in hydrodynamic_models.cpp, with
 // what the rest of the program asks of a model by name: whether its overdamped solve can take implicit contact
 // springs, the refusals of what it cannot do, its keys in the resolved case, the simulation it builds, its block in
-// summary.json, which of its terms use the exact two-sphere tables and the size of its grid. Adding a model is its HydrodynamicModel
-// (dem/hydrodynamic_model.hpp) plus its entry here (docs/architecture.md).
+// summary.json, which of its terms use the exact two-sphere tables and the size of its grid. Adding a model is its
+// HydrodynamicModel (dem/hydrodynamic_model.hpp) plus its entry here (docs/architecture.md).
 #pragma once
 #include <yaml-cpp/yaml.h>
 

@@ -11,9 +11,9 @@
 //               eqs. 4d-4e, lever arms of paper 004 eq. 11)
 //   rolling     NoRolling or RollingResistance (paper 000 Appendix B), with the same load
 //   twisting    TwistingResistance (Luding 2008 section 2.3), with the same load
-// Forces are ON j (n from i to j). The friction and rolling rules are types (the contact law's variant, contact_law.hpp,
-// lists every product, so the pair loop calls them directly); damping, adhesion and twisting are values with a cheap
-// branch per contact. Any choice composes with any other, except that JKR takes adhesion: none.
+// Forces are ON j (n from i to j). The friction and rolling rules are types (the contact law's variant,
+// contact_law.hpp, lists every product, so the pair loop calls them directly); damping, adhesion and twisting are
+// values with a cheap branch per contact. Any choice composes with any other, except that JKR takes adhesion: none.
 // Contact ends when the normal law says so: the history is reset (xi(t_0) = 0 at the next contact). A model whose
 // sub-models keep no history keeps none at all. A normal law with hysteresis (JKR) declares
 // `static constexpr bool keeps_history = true` and takes the pair history in apply(g, m, f, h), keeping its state in

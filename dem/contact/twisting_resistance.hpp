@@ -1,7 +1,7 @@
 // Twisting (torsion) resistance, a sub-model that composes with every normal law (Luding, Granular Matter 10, 235
 // (2008), section 2.3, the torsion sibling of the rolling resistance of paper 000 Appendix B).
 //
-//   u_o = a_ij (omega_i - omega_j) . n                    (the twisting velocity, along n; a_ij = 2 a_i a_j / (a_i + a_j))
+//   u_o = a_ij (omega_i - omega_j) . n                    (the twisting velocity along n; a_ij = 2 a_i a_j/(a_i + a_j))
 //   xi_o += u_o dt,   F_o = -k_o xi_o,   |F_o| <= mu_o |L|  (stick/slide of a spring about n, L the normal load)
 //   T_i = a_ij F_o n,  T_j = -T_i                         (a pair of opposite torques about the normal)
 // F_o is a pseudo-force: no force and no stresslet, only the torques. T_i opposes the spin of i relative to j about
