@@ -73,6 +73,8 @@ void add_sweep_command(CLI::App& app) {
       campaign::print_status(c, opt->out, opt->sweep.jobs);
       return;
     }
+    // Once, before any point: every round of a search runs the same program, even if it is replaced meanwhile.
+    if (opt->sweep.executable.empty()) opt->sweep.executable = campaign::own_executable();
     const int code = campaign::launched_by_mpi()                   ? campaign::run_sweep_mpi(base, opt->sweep)
                      : c.search && opt->sweep.only_point.empty() ? campaign::run_search_sweep(base, opt->sweep)
                                                                  : campaign::run_sweep(c, opt->sweep);

@@ -185,7 +185,7 @@ int run_search_sweep(const Campaign& c, const SweepOptions& o) {
     finished_before = finished;
     if (!o.quiet) std::printf("%s", describe_search(c, plan).c_str()), std::fflush(stdout);
     code = run_sweep(round, o);
-    if (code > 128 || code == exit_output_error) return code;  // stopped, or the disk is full
+    if (code > 128 || code == exit_output_error) return code;  // stopped, the disk full, or the program missing
   }
 }
 

@@ -7,8 +7,10 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <deque>
 #include <fstream>
@@ -28,6 +30,8 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 namespace {
+// The exit of a point's child whose exec failed (the shell's "command not found").
+constexpr int could_not_start = 127;
 std::atomic<int> stop_signal{0};
 extern "C" void on_sweep_signal(int sig) { stop_signal.store(sig); }
 
@@ -118,6 +122,14 @@ void check_and_record_points(const Campaign& c, const fs::path& dir) {
                             nlohmann::ordered_json{{"campaign", c.source}, {"points", known}}.dump(1) + "\n");
 }
 
+std::string own_executable() {
+  std::string exe = fs::read_symlink("/proc/self/exe").string();
+  const std::string deleted = " (deleted)";
+  if (exe.size() > deleted.size() && exe.compare(exe.size() - deleted.size(), deleted.size(), deleted) == 0)
+    exe.resize(exe.size() - deleted.size());
+  return exe;
+}
+
 int run_sweep(const Campaign& c, const SweepOptions& o) {
   std::vector<const Point*> selected;
   if (!o.only_point.empty()) {
@@ -127,7 +139,7 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
   } else {
     for (const Point& p : c.points) selected.push_back(&p);
   }
-  const std::string exe = o.executable.empty() ? fs::read_symlink("/proc/self/exe").string() : o.executable;
+  const std::string exe = o.executable.empty() ? own_executable() : o.executable;
   check_and_record_points(c, o.out_dir);
 
   std::deque<const Point*> todo;
@@ -209,7 +221,8 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
       for (std::string& a : args) argv.push_back(a.data());
       argv.push_back(nullptr);
       execv(exe.c_str(), argv.data());
-      _exit(127);
+      std::fprintf(stderr, "error: cannot start %s: %s\n", exe.c_str(), std::strerror(errno));
+      _exit(could_not_start);
     }
     if (pid < 0) throw std::runtime_error("fork failed for point " + p->name);
     say("start " + p->name + (r.runs > 1 ? " (continued, run " + std::to_string(r.runs) + ")" : ""));
@@ -217,6 +230,7 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
   };
 
   bool disk_full = false;  // a point stopped with exit_output_error
+  bool not_started = false;  // a point's run could not be started: the program is missing or not executable
   auto finish = [&](Job& j, int status) {
     const fs::path pd = point_dir(o.out_dir, *j.point);
     PointRecord& r = j.record;
@@ -231,6 +245,12 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
       r.message = reason;
     } else if ((code == 143 || code == 130) && stop_signal.load() && !j.over_budget) {
       r.status = "pending";  // stopped with the sweep: continues from its checkpoint next time
+    } else if (code == could_not_start && reason.rfind("error: cannot start", 0) == 0) {
+      // Not the point's failure: it never ran. It stays pending, and no more points are started.
+      r.status = "pending";
+      r.message = reason;
+      if (!not_started) say(reason + ": no more points are started; the same command continues the sweep");
+      not_started = true;
     } else if (code == exit_output_error) {
       // The disk is full for every point: none is started any more, this one continues once there is room.
       r.status = "pending";
@@ -251,8 +271,9 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
   };
 
   bool forwarded = false;
-  while ((!todo.empty() && !stop_signal.load() && !disk_full) || !jobs.empty()) {
-    while (static_cast<int>(jobs.size()) < o.jobs && !todo.empty() && !stop_signal.load() && !disk_full) {
+  while ((!todo.empty() && !stop_signal.load() && !disk_full && !not_started) || !jobs.empty()) {
+    while (static_cast<int>(jobs.size()) < o.jobs && !todo.empty() && !stop_signal.load() && !disk_full &&
+           !not_started) {
       const Point* p = todo.front();
       todo.pop_front();
       start(p);
@@ -306,7 +327,7 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
   for (const auto& [s, n] : counts) line += (line.empty() ? "" : ", ") + std::to_string(n) + " " + s;
   say(line + "; table: " + (o.out_dir / "campaign.json").string() + ", " + (o.out_dir / "campaign.csv").string());
   if (const int sig = stop_signal.load()) return 128 + sig;
-  if (disk_full) return exit_output_error;
+  if (disk_full || not_started) return exit_output_error;
   return failed > 0 || counts["failed"] > 0 ? exit_numerical_error : 0;
 }
 

@@ -22,8 +22,14 @@ struct SweepOptions {
   std::string executable;      // the suspend program run for each point; empty: this process's own
 };
 
-// Returns 0 when every selected point ended done or jammed, 3 when some failed, 128 + signal when stopped.
+// Returns 0 when every selected point ended done or jammed, 3 when some failed, 128 + signal when stopped, and
+// exit_output_error when a point's run could not be started (the program missing): that point stays pending.
 int run_sweep(const Campaign& c, const SweepOptions& o);
+
+// The path of this program, as the sweep runs it for each point. A binary replaced at that path while the sweep runs
+// (a rename over it, as tools/resume_campaigns.sh installs one) makes /proc/self/exe read "PATH (deleted)": the
+// path is what runs next, so the suffix is dropped.
+std::string own_executable();
 
 // Refuses (InputError, naming the point and the keys) a campaign whose points differ from those DIR was started
 // with, other than added points; then records the campaign's points in DIR/sweep.json.

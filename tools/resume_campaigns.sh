@@ -36,7 +36,8 @@ suspend=${1:-$root/build/bin/suspend}
 runs=${2:-$root/runs}
 if [[ ! -x $suspend ]]; then echo "error: $suspend not found; build first (see README)" >&2; exit 2; fi
 mkdir -p "$runs/bin"
-# copy then rename: a running sweep keeps its (busy) binary, new sweeps get the new one
+# copy then rename: never a half-written binary at the path; a running sweep starts its later points with the new
+# one (it runs the path, campaign/sweep.hpp own_executable)
 cp "$suspend" "$runs/bin/suspend-campaign.new"
 mv -f "$runs/bin/suspend-campaign.new" "$runs/bin/suspend-campaign"
 # name | campaign file | committed table

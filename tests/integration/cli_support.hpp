@@ -29,8 +29,8 @@ inline std::string scratch() {
   return d;
 }
 inline pid_t spawn(std::vector<std::string> args, const std::string& err_file, bool own_group = false,
-                   const std::string& out_file = "/dev/null") {
-  args.insert(args.begin(), suspend_bin);
+                   const std::string& out_file = "/dev/null", const std::string& program = suspend_bin) {
+  args.insert(args.begin(), program);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -45,7 +45,7 @@ inline pid_t spawn(std::vector<std::string> args, const std::string& err_file, b
     posix_spawnattr_setpgroup(&attr, 0);
   }
   pid_t pid = -1;
-  EXPECT_EQ(posix_spawn(&pid, suspend_bin.c_str(), &fa, &attr, argv.data(), environ), 0);
+  EXPECT_EQ(posix_spawn(&pid, program.c_str(), &fa, &attr, argv.data(), environ), 0);
   posix_spawn_file_actions_destroy(&fa);
   posix_spawnattr_destroy(&attr);
   return pid;

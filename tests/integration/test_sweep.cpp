@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "core/error.hpp"
 #include "io/hdf5.hpp"
 #include "tests/integration/cli_support.hpp"
 
@@ -157,6 +158,53 @@ TEST(Sweep, TwoSweepsOnOneFolderRunEachPointOnce) {
 // to 0.05 with 3 seeds tries 0.1 and 0.5, then 0.3, 0.4 and 0.35, and stops at the bracket [0.3, 0.35]; one job or
 // two give the same table, a second sweep adds nothing, a SIGKILLed search resumes to the same table, and a range
 // whose low end jams is reported as such.
+// The program a sweep runs for its points, installed anew at the same path while the sweep runs (a rename over it,
+// as tools/resume_campaigns.sh installs one), runs the later rounds of a search; removed, it leaves the points it
+// cannot start pending and the sweep stops saying why. Nothing is marked failed, and the same command continues.
+TEST(Sweep, AProgramReplacedOrRemovedWhileTheSweepRunsLosesNoPoint) {
+  const std::string file = write_case(
+      "search_program.yaml", "case: " + restart_case +
+                                 "\nset: {particles.count: 40, run.strain: 0.3, run.average_from: 0, flow.control: "
+                                 "stress, flow.shear_stress: 1, run.jammed.viscosity: 3, run.jammed.strain: 0.01}\n"
+                                 "search: {key: particles.phi, lo: 0.1, hi: 0.5, tolerance: 0.05, seeds: 3}\n");
+  const std::string program = scratch() + "/suspend-installed";
+  auto install = [&] {
+    fs::copy_file(suspend_bin, program + ".new", fs::copy_options::overwrite_existing);
+    fs::rename(program + ".new", program);
+  };
+  auto statuses = [&](const std::string& dir) {
+    std::map<std::string, int> n;
+    const json t = table(dir);
+    for (const json& p : t["points"]) ++n[p["status"].get<std::string>()];
+    return n;
+  };
+  install();
+  const std::string replaced = fresh_dir("search_replaced");
+  pid_t pid = spawn({"sweep", file, "--out", replaced, "--jobs", "1", "--quiet"}, replaced + ".err", true,
+                    "/dev/null", program);
+  while (!fs::exists(replaced + "/points/phi0.1_seed1/summary.json"))
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  install();  // the later rounds start their points with the new file at the same path
+  ASSERT_EQ(wait_exit(pid), 0) << read_text(replaced + ".err");
+  EXPECT_EQ(statuses(replaced)["failed"], 0);
+  EXPECT_EQ(statuses(replaced)["done"] + statuses(replaced)["jammed"], 15) << "the whole search";
+
+  const std::string removed = fresh_dir("search_removed");
+  pid = spawn({"sweep", file, "--out", removed, "--jobs", "1"}, removed + ".err", true, removed + ".out", program);
+  while (!fs::exists(removed + "/points/phi0.1_seed1/summary.json"))
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  fs::remove(program);
+  EXPECT_EQ(wait_exit(pid), suspend::exit_output_error);
+  const std::string said = read_text(removed + ".out");
+  EXPECT_NE(said.find("error: cannot start "), std::string::npos) << said;
+  EXPECT_NE(said.find("suspend-installed: No such file or directory: no more points are started"), std::string::npos)
+      << said;
+  EXPECT_EQ(statuses(removed)["failed"], 0);
+  EXPECT_GE(statuses(removed)["pending"], 1);
+  ASSERT_EQ(run({"sweep", file, "--out", removed, "--jobs", "2", "--quiet"}).code, 0);
+  EXPECT_EQ(statuses(removed)["done"] + statuses(removed)["jammed"], 15);
+}
+
 TEST(Sweep, TheSearchBisectsToTheBoundaryWithSeeds) {
   const std::string body = "case: " + restart_case +
                            "\nset: {particles.count: 40, run.strain: 0.3, run.average_from: 0, flow.control: stress, "
