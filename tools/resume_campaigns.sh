@@ -36,6 +36,12 @@ suspend=${1:-$root/build/bin/suspend}
 runs=${2:-$root/runs}
 if [[ ! -x $suspend ]]; then echo "error: $suspend not found; build first (see README)" >&2; exit 2; fi
 mkdir -p "$runs/bin"
+# One chain at a time: a second would run its points beside the first's (four runs on two cores).
+if pgrep -f "$runs/bin/suspend-campaign sweep" > /dev/null; then
+  echo "error: campaigns are already running from $runs (pgrep -af suspend-campaign); stop them first with" \
+       "pkill -f suspend-campaign (each point checkpoints), then resume" >&2
+  exit 2
+fi
 # copy then rename: never a half-written binary at the path; a running sweep starts its later points with the new
 # one (it runs the path, campaign/sweep.hpp own_executable)
 cp "$suspend" "$runs/bin/suspend-campaign.new"
