@@ -36,16 +36,9 @@ def analyze(suspend, point, bins):
     return json.loads(run.stdout)
 
 
-def point_row(suspend, point, bins, threshold):
-    with open(os.path.join(point, "summary.json")) as f:
-        summary = json.load(f)
-    if summary.get("status") != "done":
-        return None
-    window = summary.get("window") or {}
-    start = window.get("from_strain", 0.0)
-    snapshots = analyze(suspend, point, bins)
-    if not snapshots:
-        return None
+def band_measures(snapshots, start):
+    """Per snapshot at strain >= start (`suspend analyze --json` objects): the smallest local shear rate across y over
+    the cell's least-squares rate, and the phi contrast across the slabs."""
     ratios, contrasts = [], []
     for s in snapshots:
         if s.get("strain", 0.0) < start - 1e-9:
@@ -58,6 +51,20 @@ def point_row(suspend, point, bins, threshold):
         ratios.append(min(local) / rate)
         phi = g["phi"]
         contrasts.append((max(phi) - min(phi)) / statistics.mean(phi))
+    return ratios, contrasts
+
+
+def point_row(suspend, point, bins, threshold):
+    with open(os.path.join(point, "summary.json")) as f:
+        summary = json.load(f)
+    if summary.get("status") != "done":
+        return None
+    window = summary.get("window") or {}
+    start = window.get("from_strain", 0.0)
+    snapshots = analyze(suspend, point, bins)
+    if not snapshots:
+        return None
+    ratios, contrasts = band_measures(snapshots, start)
     if not ratios:
         return None
     r = statistics.median(ratios)
