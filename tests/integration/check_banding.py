@@ -10,7 +10,6 @@ import sys
 sys.path.insert(0, os.path.join(sys.argv[1], "tools"))
 from banding_check import band_measures  # noqa: E402
 
-y = [1.0 + 2.0 * k for k in range(8)]
 
 
 def snapshot(strain, local, cell_rate, phi=None):
