@@ -20,6 +20,7 @@
 // scatter rebuilds the rows in O(N + |P|); store() and release() of a single pair shift the rows behind it
 // (O(N + contacts)): they are for set-up, checkpoints and tests, not for the step loop.
 #pragma once
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -64,23 +65,24 @@ class ContactHistory {
   void scatter(std::span<const NeighbourPair> pairs, std::span<const PairHistory> in);
 
  private:
-  // The stretches and scalar states of a stored pair, oriented for (row, partner) (in_contact is implied by being
-  // stored; pair_history.hpp says how each part turns under the swap).
+  // The stretches and scalar slots of a stored pair, oriented for (row, partner) (in_contact is implied by being
+  // stored; PairHistory::swapped turns a pair's history the other way).
   struct Stretch {
     Vec3 tangential, rolling;
-    double normal, twisting;
+    std::array<double, scalar_slots.size()> scalars;
     static Stretch of(const PairHistory& h, bool swapped) {
-      return {swapped ? Vec3(-h.tangential_stretch) : h.tangential_stretch, h.rolling_stretch, h.normal_state,
-              h.twisting_stretch};
+      const PairHistory o = swapped ? h.swapped() : h;
+      Stretch s{o.tangential_stretch, o.rolling_stretch, {}};
+      for (std::size_t q = 0; q < scalar_slots.size(); ++q) s.scalars[q] = o.*scalar_slots[q].member;
+      return s;
     }
     PairHistory history(bool swapped) const {
       PairHistory h;
-      h.tangential_stretch = swapped ? Vec3(-tangential) : tangential;
+      h.tangential_stretch = tangential;
       h.rolling_stretch = rolling;
       h.in_contact = true;
-      h.normal_state = normal;
-      h.twisting_stretch = twisting;
-      return h;
+      for (std::size_t q = 0; q < scalar_slots.size(); ++q) h.*scalar_slots[q].member = scalars[q];
+      return swapped ? h.swapped() : h;
     }
   };
   // The row of the lower index, the partner and whether the caller's order is swapped.

@@ -35,8 +35,7 @@ template <class Model>
 void read_common(SchemaReader& r, Model& c) {
   using N = typename Model::normal_type;
   if constexpr (std::is_same_v<N, JkrAdhesion>) {
-    const std::vector<std::string> models(std::begin(Adhesion::names), std::end(Adhesion::names));
-    if (r.choice(std::string(Adhesion::key), "none", models) != "none")
+    if (r.choice(std::string(Adhesion::key), "none", Adhesion::choices()) != "none")
       r.fail(std::string(Adhesion::key), "law: jkr carries its own adhesion (work_of_adhesion); give adhesion: none");
   } else {
     c.adhesion = Adhesion::read(r, N::default_adhesion, N::default_g_adh);

@@ -16,10 +16,12 @@
 // Units: F_adh in eta_0 gammadot_ref a_1^2, W in eta_0 gammadot_ref (per a_1).
 #pragma once
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/range.hpp"
 #include "dem/contact/pair_geometry.hpp"
@@ -52,17 +54,9 @@ struct Adhesion {
             model == Model::dmt ? "contact.work_of_adhesion" : "contact.g_adh (through the adhesion force 6 pi g_adh)");
   }
   // The attraction of the pair g, in contact.
-  double force(const PairGeometry& g) const {
-    return model == Model::constant ? parameter : std::numbers::pi * parameter * g.harmonic_radius();
-  }
-  // F_adh of the a_1 pair, the scale of sigma*; 0 without adhesion.
-  double scale() const {
-    switch (model) {
-      case Model::constant: return parameter;
-      case Model::dmt: return std::numbers::pi * parameter;
-      default: return 0.0;
-    }
-  }
+  double force(const PairGeometry& g) const { return force_at(g.harmonic_radius()); }
+  // F_adh of the a_1 pair (harmonic radius a_1), the scale of sigma*; 0 without adhesion.
+  double scale() const { return active() ? force_at(1.0) : 0.0; }
   void apply(const PairGeometry& g, PairForce& f) const {
     if (active()) f[Contribution::adhesion] = -force(g) * g.n;
   }
@@ -72,10 +66,11 @@ struct Adhesion {
     return active() && gap < onset ? -force(g) * (onset - gap) : 0.0;
   }
 
+  static std::vector<std::string> choices() { return {std::begin(names), std::end(names)}; }
+
   template <class Reader>
   static Adhesion read(Reader& r, std::string_view law_default, double default_g_adh) {
-    const std::string model = r.choice(std::string(key), std::string(law_default),
-                                       {std::string(names[0]), std::string(names[1]), std::string(names[2])});
+    const std::string model = r.choice(std::string(key), std::string(law_default), choices());
     if (model == names[1]) return constant_group(r.number("g_adh", default_g_adh, Range::non_negative()));
     if (r.has("g_adh")) r.fail("g_adh", "the constant adhesion group; give it only with adhesion: constant");
     if (model == names[2]) return dmt(r.number("work_of_adhesion", Range::non_negative()));
@@ -87,6 +82,12 @@ struct Adhesion {
     w.text(key, name());
     if (model == Model::constant) w.number("g_adh", std::isnan(g_adh) ? parameter / (6.0 * std::numbers::pi) : g_adh);
     if (model == Model::dmt) w.number("work_of_adhesion", parameter);
+  }
+
+ private:
+  // 2 pi W R* = pi W a_ij for DMT, of a pair of harmonic radius a_ij; the constant force otherwise.
+  double force_at(double harmonic_radius) const {
+    return model == Model::dmt ? std::numbers::pi * parameter * harmonic_radius : parameter;
   }
 };
 

@@ -13,8 +13,10 @@
 // Giving gamma_n alone means viscous (the linear spring's former key); viscous with gamma_n = 0 is none.
 // Units: gamma_n in eta_0 a_1 (gamma_n gammadot / k_n is paper 000's damping group), A in 1 / gammadot_ref.
 #pragma once
+#include <iterator>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/range.hpp"
 #include "dem/contact/pair_geometry.hpp"
@@ -43,11 +45,12 @@ struct NormalDamping {
     return model == Model::viscous ? coefficient * v_n : coefficient * normal_stiffness * v_n;
   }
 
+  static std::vector<std::string> choices() { return {std::begin(names), std::end(names)}; }
+
   template <class Reader>
   static NormalDamping read(Reader& r) {
     const bool gamma_given = r.has("gamma_n");
-    const std::string model = r.choice(std::string(key), gamma_given ? "viscous" : "none",
-                                       {std::string(names[0]), std::string(names[1]), std::string(names[2])});
+    const std::string model = r.choice(std::string(key), gamma_given ? "viscous" : "none", choices());
     if (model == names[1]) return viscous(r.number("gamma_n", 0.0, Range::non_negative()));
     if (gamma_given) r.fail("gamma_n", "the viscous damping coefficient; give it only with damping: viscous");
     if (model == names[2]) return viscoelastic(r.number("dissipation_time", 0.0, Range::non_negative()));
