@@ -12,6 +12,7 @@
 #include "core/particles.hpp"
 #include "dem/contact/contact_law.hpp"
 #include "dem/contact_history.hpp"
+#include "dem/integrate/time_step_control.hpp"
 #include "dem/pair_forces.hpp"
 #include "dem/verlet_list.hpp"
 
@@ -69,12 +70,13 @@ class ContactStage {
   std::vector<PairSums> scratch_;
 };
 
-// Largest |U - U_inf| over the particles, U_inf(x) = velocity(x) of the caller's flow.
+// The speed |U - U_inf| that the displacement bound applies to, U_inf(x) = velocity(x) of the caller's flow: the
+// fastest of every `fastest_of` particles (bounding_speed, time_step_control.hpp); `speeds` is scratch.
 template <class Flow>
-double max_nonaffine_speed(const Particles& p, const Flow& flow) {
-  double speed = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) speed = std::max(speed, (p.velocity[i] - flow.velocity(p.position[i])).norm());
-  return speed;
+double nonaffine_bounding_speed(const Particles& p, const Flow& flow, int fastest_of, std::vector<double>& speeds) {
+  speeds.resize(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) speeds[i] = (p.velocity[i] - flow.velocity(p.position[i])).norm();
+  return bounding_speed(speeds, fastest_of);
 }
 
 }  // namespace suspend

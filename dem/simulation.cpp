@@ -108,27 +108,22 @@ double Simulation::overdamped_velocities(const HydroLoad& load) {
   }
   iterations_ = response->iterations;
   residual_ = response->residual;
-  double max_speed = 0.0;
-  const AmbientFlow f = flow(rate_);
   for (std::size_t i = 0; i < n; ++i) {
     p.velocity[i] = response->velocity[i];
     p.angular_velocity[i] = response->angular_velocity[i];
-    max_speed = std::max(max_speed, (p.velocity[i] - f.velocity(p.position[i])).norm());
   }
   finish_stress(response->stress);
   contact_change_ = &response->contact_change_on_j;
-  return max_speed;
+  return nonaffine_bounding_speed(p, flow(rate_), params_.time_step.fastest_of, speeds_);
 }
 
 double Simulation::inertial_velocities(const HydroLoad& load) {
-  double max_speed = 0.0;
-  const ExplicitResponse& hydro =
-      verlet_->velocities(load, rate_, flow(rate_), state_.last_dt, state_.particles, max_speed);
+  const ExplicitResponse& hydro = verlet_->velocities(load, rate_, flow(rate_), state_.last_dt, state_.particles);
   iterations_ = 0;
   residual_ = 0.0;
   finish_stress(hydro.stress);
   contact_change_ = nullptr;
-  return max_speed;
+  return nonaffine_bounding_speed(state_.particles, flow(rate_), params_.time_step.fastest_of, speeds_);
 }
 
 void Simulation::finish_stress(const StressTensors& hydrodynamic) {
@@ -182,7 +177,7 @@ void Simulation::evaluate() {
   ImplicitContacts implicit;
   if (params_.time_step.implicit_contacts) {
     dt_ = overdamped_time_step(params_.time_step, params_.contact, state_.shear_rate,
-                               max_nonaffine_speed(p, flow(state_.shear_rate)), a_min_, state_.last_dt,
+                               nonaffine_bounding_speed(p, flow(state_.shear_rate), params_.time_step.fastest_of, speeds_), a_min_, state_.last_dt,
                                contacts_.sums().mean_compliance(), pair_rate(state_.shear_rate));
     dt_ = std::min(dt_, params_.flow.max_time_step(state_.time));
     implicit = {&contacts_.stiffness(), dt_};

@@ -265,6 +265,7 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
     ts.bound = t.choice("bound", "pairs", {"pairs", "particles"}) == "particles" ? TimeStepParams::Bound::particles
                                                                                : TimeStepParams::Bound::pairs;
     ts.gap_change = t.number("gap_change", ts.gap_change, Range::open_closed(0.0, 1.0));
+    ts.fastest_of = static_cast<int>(t.integer("fastest_of", ts.fastest_of, 0, 1'000'000'000));
     ts.growth = t.number("growth", ts.growth, Range::open_closed(1.0, 10.0));
     ts.displacement_per_compliance =
         t.number("displacement_per_compliance", ts.displacement_per_compliance, Range::positive());
@@ -376,6 +377,7 @@ YAML::Node to_yaml(const Case& c) {
   r["time_step"]["displacement_per_compliance"] = number_node(ts.displacement_per_compliance);
   r["time_step"]["bound"] = ts.bound == TimeStepParams::Bound::pairs ? "pairs" : "particles";
   r["time_step"]["gap_change"] = number_node(ts.gap_change);
+  r["time_step"]["fastest_of"] = ts.fastest_of;
   if (ts.min_displacement > 0.0) r["time_step"]["min_displacement"] = number_node(ts.min_displacement);
   r["output"]["series_every"] = number_node(c.run.output.series_every);
   if (c.simulation.flow.periodic()) r["output"]["series_per_cycle"] = c.run.output.series_per_cycle;
@@ -463,6 +465,9 @@ YAML::Node with_former_defaults(YAML::Node recorded) {
   const YAML::Node run = view.IsMap() ? view["run"] : YAML::Node();
   if (run.IsMap() && run["time_step"].IsMap() && !run["time_step"]["bound"])
     recorded["run"]["time_step"]["bound"] = "particles";
+  // Recorded before 2026-12-07: the displacement bound on the fastest particle of all.
+  if (run.IsMap() && run["time_step"].IsMap() && !run["time_step"]["fastest_of"])
+    recorded["run"]["time_step"]["fastest_of"] = 0;
   const YAML::Node hydro = view.IsMap() ? view["hydrodynamics"] : YAML::Node();
   if (!hydro.IsMap() || !hydro["model"].IsScalar() || hydro["model"].Scalar() != "fcm" || !hydro["fcm"].IsMap())
     return recorded;

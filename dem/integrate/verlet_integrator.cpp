@@ -43,7 +43,7 @@ void VerletIntegrator::set_contact_velocities(Particles& p) const {
 }
 
 const ExplicitResponse& VerletIntegrator::velocities(const HydroLoad& load, double rate, const AmbientFlow& flow,
-                                                     double last_dt, Particles& p, double& max_speed) {
+                                                     double last_dt, Particles& p) {
   const std::size_t n = p.size();
   const std::vector<double>& v = state_;
   // Hydrodynamic force and torque at the half-step velocities (explicit, paper 000 eq. 15c).
@@ -56,7 +56,6 @@ const ExplicitResponse& VerletIntegrator::velocities(const HydroLoad& load, doub
   const ExplicitResponse& hydro = model_.explicit_forces(load, rate, disturbance_, mass_, moment_);
   relaxation_rate_ = hydro.relaxation_rate;
   acceleration_.resize(6 * n);
-  max_speed = 0.0;
   const double half = 0.5 * last_dt;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 a_lin = (load.force[i] + hydro.force.segment<3>(6 * i)) / mass_[i];
@@ -64,7 +63,6 @@ const ExplicitResponse& VerletIntegrator::velocities(const HydroLoad& load, doub
     for (int k = 0; k < 3; ++k) acceleration_[6 * i + k] = a_lin[k], acceleration_[6 * i + 3 + k] = a_ang[k];
     p.velocity[i] = Vec3(v[12 * i], v[12 * i + 1], v[12 * i + 2]) + half * a_lin;  // eq. 15d
     p.angular_velocity[i] = Vec3(v[12 * i + 3], v[12 * i + 4], v[12 * i + 5]) + half * a_ang;
-    max_speed = std::max(max_speed, (p.velocity[i] - flow.velocity(p.position[i])).norm());
   }
   return hydro;
 }

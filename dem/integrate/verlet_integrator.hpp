@@ -27,9 +27,9 @@ class VerletIntegrator {
   void set_contact_velocities(Particles& p) const;
   // The hydrodynamic force at the half-step velocities in the flow at `rate`, the accelerations a^{n+1} from it and
   // the load's contact forces, and u^{n+1} = u^{n+1/2} + (last_dt / 2) a^{n+1} (eq. 15d) into p. Returns the model's
-  // response (its stress sums); `max_speed` gets the largest speed relative to the flow.
+  // response (its stress sums).
   const ExplicitResponse& velocities(const HydroLoad& load, double rate, const AmbientFlow& flow, double last_dt,
-                                     Particles& p, double& max_speed);
+                                     Particles& p);
   // The explicit stability bound: `stability` x the contact time sqrt(m_min / k) and x the fastest hydrodynamic
   // relaxation time of the last evaluation.
   double stability_time_step(double stiffness, double stability) const;

@@ -1,6 +1,10 @@
 // The step bound from the relative motion of the interacting pairs (dem/integrate/pair_motion.hpp).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+#include <vector>
+
 #include "dem/integrate/pair_motion.hpp"
 #include "dem/integrate/time_step_control.hpp"
 #include "tests/simulation_state.hpp"
@@ -69,4 +73,42 @@ TEST(PairMotion, PairsBoundFollowsTheFastestPairNotTheFastestParticle) {
   EXPECT_DOUBLE_EQ(overdamped_time_step(ts, law, 0.01, 0.2, 1.0, last_dt, 0.0, 1000.0), 1e-3);
   EXPECT_DOUBLE_EQ(contact_displacement(ts, law, 0.0), 0.1 * h_r);
   EXPECT_DOUBLE_EQ(contact_displacement(ts, law, 1e-4), 4e-4);  // four compliance lengths
+}
+
+TEST(BoundingSpeed, IsTheFastestOfEveryFastestOfParticles) {
+  std::vector<double> speeds{0.3, 2.0, 0.1, 1.5, 0.7, 1.9};
+  std::vector<double> s = speeds;
+  EXPECT_EQ(bounding_speed(s, 0), 2.0);  // the fastest of all
+  s = speeds;
+  EXPECT_EQ(bounding_speed(s, 4), 2.0);  // 6 / 4 = 1: the fastest
+  s = speeds;
+  EXPECT_EQ(bounding_speed(s, 3), 1.9);  // 6 / 3 = 2: the second fastest
+  s = speeds;
+  EXPECT_EQ(bounding_speed(s, 2), 1.5);  // the third
+  std::vector<double> none;
+  EXPECT_EQ(bounding_speed(none, 500), 0.0);
+}
+
+// The point of the rule: for speeds with Gaussian tails the fastest of N grows with N (extreme value, ~ sqrt(2 ln N)),
+// the fastest of every 500 does not. Speeds |v| of 3-d Gaussian velocities (Maxwell), 20 seeded draws per N.
+TEST(BoundingSpeed, DoesNotGrowWithTheNumberOfParticles) {
+  auto mean_bound = [](std::size_t n, int fastest_of) {
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> g;
+    double sum = 0.0;
+    for (int draw = 0; draw < 20; ++draw) {
+      std::vector<double> s(n);
+      for (double& v : s) {
+        const double x = g(rng), y = g(rng), z = g(rng);
+        v = std::sqrt(x * x + y * y + z * z);
+      }
+      sum += bounding_speed(s, fastest_of);
+    }
+    return sum / 20.0;
+  };
+  const double max_500 = mean_bound(500, 0), max_8000 = mean_bound(8000, 0);
+  const double rule_500 = mean_bound(500, 500), rule_8000 = mean_bound(8000, 500);
+  EXPECT_EQ(max_500, rule_500);            // below 1000 particles: the fastest of all, as before
+  EXPECT_GT(max_8000 / max_500, 1.15);     // Maxwell tail: 4.58 / 3.98 expected
+  EXPECT_NEAR(rule_8000 / rule_500, 1.0, 0.04);
 }
