@@ -1,5 +1,6 @@
 #include "linalg/block_matrix.hpp"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <string>
 
@@ -9,6 +10,7 @@
 namespace suspend {
 
 void SymmetricBlockMatrix::set_structure(std::size_t n, const std::vector<BlockLink>& links) {
+  scaled_ = false;
   links_ = links;
   diagonal_.resize(n);
   resize_with_headroom(coupling_, links.size());
@@ -43,25 +45,72 @@ void SymmetricBlockMatrix::set_structure(std::size_t n, const std::vector<BlockL
   }
 }
 
+bool SymmetricBlockMatrix::factor_diagonal() {
+  if (scaled_) return true;  // already in scaled form
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(diagonal_.size());
+  bool spd = true;
+#pragma omp parallel for schedule(static) if (n > 512) reduction(&& : spd)
+  for (std::ptrdiff_t r = 0; r < n; ++r) {
+    const Eigen::LLT<Matrix6> llt(diagonal_[r]);
+    spd = spd && llt.info() == Eigen::Success;
+    diagonal_[r] = llt.matrixL();
+    diagonal_[r].triangularView<Eigen::StrictlyUpper>().setZero();  // the dense products below rely on it
+  }
+  if (!spd) return false;
+  const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(links_.size());
+#pragma omp parallel for schedule(static) if (nl > 512)
+  for (std::ptrdiff_t k = 0; k < nl; ++k) {  // L_i^-1 C L_j^-T: (L_j^-1 (L_i^-1 C)^T)^T
+    Matrix6& c = coupling_[k];
+    solve_lower(diagonal_[links_[k].i], c);
+    solve_lower(diagonal_[links_[k].j], c.transpose());
+  }
+  scaled_ = true;
+  return true;
+}
+
+Vector6 SymmetricBlockMatrix::coupling_transpose_times(std::size_t k, const Vector6& v) const {
+  if (!scaled_) return coupling_[k].transpose() * v;
+  const Matrix6& l_i = diagonal_[links_[k].i];
+  const Matrix6& l_j = diagonal_[links_[k].j];
+  const Vector6 w = l_i.transpose() * v;  // L stored with zeros above its diagonal
+  return l_j * Vector6(coupling_[k].transpose() * w);
+}
+
 void SymmetricBlockMatrix::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(diagonal_.size());
   y.resize(x.size());
+  if (!scaled_) {
+#pragma omp parallel for schedule(static) if (n > 512)
+    for (std::ptrdiff_t r = 0; r < n; ++r) {
+      Vector6 acc = diagonal_[r] * x.segment<6>(6 * r);
+      for (const RowEntry* e = row_begin(r); e != row_end(r); ++e) acc += apply(*e, x);
+      y.segment<6>(6 * r) = acc;
+    }
+    return;
+  }
+  // A x = S^-1 (I + N + N^T) S^-T x: w = L^T x, then row r is L_r (w_r + sum_c A'_rc w_c). L_r is stored with
+  // zeros above its diagonal, so the full 6x6 products (vectorised) give the triangular ones.
+  scaled_x_.resize(x.size());
+#pragma omp parallel for schedule(static) if (n > 512)
+  for (std::ptrdiff_t r = 0; r < n; ++r) scaled_x_.segment<6>(6 * r).noalias() = diagonal_[r].transpose() * x.segment<6>(6 * r);
 #pragma omp parallel for schedule(static) if (n > 512)
   for (std::ptrdiff_t r = 0; r < n; ++r) {
-    Vector6 acc = diagonal_[r] * x.segment<6>(6 * r);
-    for (const RowEntry* e = row_begin(r); e != row_end(r); ++e) acc += apply(*e, x);
-    y.segment<6>(6 * r) = acc;
+    Vector6 acc = scaled_x_.segment<6>(6 * r);
+    for (const RowEntry* e = row_begin(r); e != row_end(r); ++e) acc += apply(*e, scaled_x_);
+    y.segment<6>(6 * r).noalias() = diagonal_[r] * acc;
   }
 }
 
 Eigen::MatrixXd SymmetricBlockMatrix::dense() const {
   const std::size_t n = diagonal_.size();
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(6 * n, 6 * n);
-  for (std::size_t r = 0; r < n; ++r) a.block<6, 6>(6 * r, 6 * r) = diagonal_[r];
+  for (std::size_t r = 0; r < n; ++r)
+    a.block<6, 6>(6 * r, 6 * r) = scaled_ ? Matrix6(diagonal_[r] * diagonal_[r].transpose()) : diagonal_[r];
   for (std::size_t k = 0; k < links_.size(); ++k) {
     const BlockLink& l = links_[k];
-    a.block<6, 6>(6 * l.i, 6 * l.j) += coupling_[k];
-    a.block<6, 6>(6 * l.j, 6 * l.i) += coupling_[k].transpose();
+    const Matrix6 c = scaled_ ? Matrix6(diagonal_[l.i] * coupling_[k] * diagonal_[l.j].transpose()) : coupling_[k];
+    a.block<6, 6>(6 * l.i, 6 * l.j) += c;
+    a.block<6, 6>(6 * l.j, 6 * l.i) += c.transpose();
   }
   return a;
 }

@@ -2,6 +2,11 @@
 // One block row per particle (U_i, Omega_i); one diagonal block per particle and one coupling block per link (i, j),
 // stored once as the block (i, j); the block (j, i) is its transpose, so the matrix is symmetric by construction.
 //
+// Diagonal scaling (factor_diagonal, for the conjugate gradient): D_i = L_i L_i^T (Cholesky), and the matrix keeps
+// A' = S A S^T, S = diag(L_i^-1) (unit diagonal blocks) in place of A: coupling() then holds L_i^-1 C L_j^-T and
+// diagonal() holds L_i. Products with A (multiply, coupling_transpose_times, dense) stay available from A' and L,
+// A = S^-1 A' S^-T, so the scaled form replaces the plain one instead of being stored beside it (288 B a link).
+//
 // Layout: the coupling blocks are contiguous in link order; each block row lists its links sorted by column (ties
 // in link order), so the layout depends only on the link list, and the entries left of the diagonal (the strictly
 // lower part L of A = L + D + L^T) come first. y = A x is a gather over block rows: threads write disjoint
@@ -17,6 +22,25 @@ namespace suspend {
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
+// X <- L^-1 X for a lower-triangular 6x6 L and X with 6 rows (forward substitution; fixed sizes, which Eigen's
+// general triangular solvers do not specialise).
+template <class X>
+inline void solve_lower(const Matrix6& l, X&& x) {
+  for (int r = 0; r < 6; ++r) {
+    for (int c = 0; c < r; ++c) x.row(r) -= l(r, c) * x.row(c);
+    x.row(r) /= l(r, r);
+  }
+}
+
+// X <- L^-T X (back substitution with the transpose of the lower-triangular L).
+template <class X>
+inline void solve_lower_transpose(const Matrix6& l, X&& x) {
+  for (int r = 5; r >= 0; --r) {
+    for (int c = r + 1; c < 6; ++c) x.row(r) -= l(c, r) * x.row(c);
+    x.row(r) /= l(r, r);
+  }
+}
+
 struct BlockLink {
   std::uint32_t i, j;  // block row and column of the stored coupling block, i != j
   friend bool operator==(const BlockLink&, const BlockLink&) = default;
@@ -30,8 +54,13 @@ class SymmetricBlockMatrix {
     bool transposed;       // true when this row is the link's j: the block (j, i) = coupling(link)^T
   };
 
-  // n block rows; coupling blocks for these links. Values are left unset: fill diagonal() and coupling().
+  // n block rows; coupling blocks for these links. Values are left unset: fill diagonal() and coupling(). The
+  // matrix is then plain (not scaled).
   void set_structure(std::size_t n, const std::vector<BlockLink>& links);
+  // Replaces A by its scaled form (see above; nothing to do if it is already). Returns false, leaving the matrix
+  // unusable, if a diagonal block is not positive definite.
+  bool factor_diagonal();
+  bool scaled() const { return scaled_; }
 
   std::size_t block_rows() const { return diagonal_.size(); }
   std::size_t size() const { return 6 * diagonal_.size(); }
@@ -47,15 +76,17 @@ class SymmetricBlockMatrix {
   const RowEntry* row_begin(std::size_t r) const { return entries_.data() + row_start_[r]; }
   const RowEntry* row_diagonal(std::size_t r) const { return entries_.data() + row_split_[r]; }
   const RowEntry* row_end(std::size_t r) const { return entries_.data() + row_start_[r + 1]; }
-  // The block of an entry: coupling(link) or its transpose.
+  // The block of an entry: coupling(link) or its transpose (of the stored form, plain or scaled).
   Vector6 apply(const RowEntry& e, const Eigen::VectorXd& x) const {
     const auto xc = x.segment<6>(6 * static_cast<Eigen::Index>(e.column));
     return e.transposed ? Vector6(coupling_[e.link].transpose() * xc) : Vector6(coupling_[e.link] * xc);
   }
+  // C_k^T v for the coupling block C_k of A (block (j, i) of link k = (i, j)), plain or scaled.
+  Vector6 coupling_transpose_times(std::size_t k, const Vector6& v) const;
 
-  // y = A x (x and y of length size(), distinct).
+  // y = A x (x and y of length size(), distinct), plain or scaled.
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
-  // Dense copy, for tests and small diagnostics only.
+  // Dense copy of A, for tests and small diagnostics only.
   Eigen::MatrixXd dense() const;
 
  private:
@@ -63,6 +94,8 @@ class SymmetricBlockMatrix {
   std::vector<Matrix6> diagonal_, coupling_;
   std::vector<std::uint32_t> row_start_, row_split_;
   std::vector<RowEntry> entries_;
+  bool scaled_ = false;
+  mutable Eigen::VectorXd scaled_x_;  // multiply's L^T x in scaled form
 };
 
 }  // namespace suspend

@@ -24,24 +24,8 @@ inline void subtract(const Entry& e, const std::vector<Matrix6>& blocks, const E
 }
 }  // namespace
 
-void PreconditionedConjugateGradient::prepare(const SymmetricBlockMatrix& a) {
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.block_rows());
-  factor_inverse_.resize(n);
-  bool spd = true;
-#pragma omp parallel for schedule(static) if (6 * n > parallel_threshold) reduction(&& : spd)
-  for (std::ptrdiff_t r = 0; r < n; ++r) {
-    const Eigen::LLT<Matrix6> llt(a.diagonal()[r]);
-    spd = spd && llt.info() == Eigen::Success;
-    factor_inverse_[r] = llt.matrixL().solve(Matrix6::Identity());  // L_i^-1
-  }
-  if (!spd) throw NumericalError("resistance solve: a diagonal 6x6 block is not positive definite");
-  const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(a.links());
-  resize_with_headroom(scaled_, nl);
-#pragma omp parallel for schedule(static) if (nl > 512)
-  for (std::ptrdiff_t k = 0; k < nl; ++k) {
-    const BlockLink& l = a.link_list()[k];
-    scaled_[k].noalias() = factor_inverse_[l.i] * a.coupling()[k] * factor_inverse_[l.j].transpose();
-  }
+void PreconditionedConjugateGradient::prepare(SymmetricBlockMatrix& a) {
+  if (!a.factor_diagonal()) throw NumericalError("resistance solve: a diagonal 6x6 block is not positive definite");
 }
 
 void PreconditionedConjugateGradient::multiply(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v,
@@ -51,7 +35,7 @@ void PreconditionedConjugateGradient::multiply(const SymmetricBlockMatrix& a, co
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     Vector6 s = v.segment<6>(6 * i);
     Vector6 off = Vector6::Zero();
-    for (const Entry* e = a.row_begin(i); e != a.row_end(i); ++e) subtract(*e, scaled_, v, off);
+    for (const Entry* e = a.row_begin(i); e != a.row_end(i); ++e) subtract(*e, a.coupling(), v, off);
     y.segment<6>(6 * i) = s - off;
   }
 }
@@ -62,7 +46,7 @@ void PreconditionedConjugateGradient::forward(const SymmetricBlockMatrix& a, con
   const std::size_t n = a.block_rows();
   for (std::size_t i = 0; i < n; ++i) {
     Vector6 s = v.segment<6>(6 * i);
-    for (const Entry* e = a.row_begin(i); e != a.row_diagonal(i); ++e) subtract(*e, scaled_, y, s);
+    for (const Entry* e = a.row_begin(i); e != a.row_diagonal(i); ++e) subtract(*e, a.coupling(), y, s);
     y.segment<6>(6 * i) = s;
   }
 }
@@ -72,20 +56,29 @@ void PreconditionedConjugateGradient::backward(const SymmetricBlockMatrix& a, co
                                                Eigen::VectorXd& y) const {
   for (std::size_t i = a.block_rows(); i-- > 0;) {
     Vector6 s = v.segment<6>(6 * i);
-    for (const Entry* e = a.row_diagonal(i); e != a.row_end(i); ++e) subtract(*e, scaled_, y, s);
+    for (const Entry* e = a.row_diagonal(i); e != a.row_end(i); ++e) subtract(*e, a.coupling(), y, s);
     y.segment<6>(6 * i) = s;
   }
 }
 
-void PreconditionedConjugateGradient::scale(const Eigen::VectorXd& r, Eigen::VectorXd& y) const {
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(factor_inverse_.size());
-  for (std::ptrdiff_t i = 0; i < n; ++i) y.segment<6>(6 * i).noalias() = factor_inverse_[i] * r.segment<6>(6 * i);
+void PreconditionedConjugateGradient::scale(const SymmetricBlockMatrix& a, const Eigen::VectorXd& r,
+                                            Eigen::VectorXd& y) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.block_rows());
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+  {
+    y.segment<6>(6 * i) = r.segment<6>(6 * i);
+    solve_lower(a.diagonal()[i], y.segment<6>(6 * i));
+  }
 }
 
-void PreconditionedConjugateGradient::unscale(const Eigen::VectorXd& u, Eigen::VectorXd& y) const {
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(factor_inverse_.size());
+void PreconditionedConjugateGradient::unscale(const SymmetricBlockMatrix& a, const Eigen::VectorXd& u,
+                                              Eigen::VectorXd& y) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.block_rows());
   for (std::ptrdiff_t i = 0; i < n; ++i)
-    y.segment<6>(6 * i).noalias() = factor_inverse_[i].transpose() * u.segment<6>(6 * i);
+  {
+    y.segment<6>(6 * i) = u.segment<6>(6 * i);
+    solve_lower_transpose(a.diagonal()[i], y.segment<6>(6 * i));
+  }
 }
 
 double PreconditionedConjugateGradient::dot(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
@@ -106,6 +99,7 @@ ConjugateGradientReport PreconditionedConjugateGradient::solve(const SymmetricBl
                                                                const Eigen::VectorXd& b, Eigen::VectorXd& x,
                                                                double tolerance, int max_iterations,
                                                                Preconditioner kind) {
+  if (!a.scaled()) throw InputError("conjugate gradient: the matrix was not prepared (scaled) for it");
   const std::ptrdiff_t size = b.size();
   for (Eigen::VectorXd* v : {&r_, &rho_, &u_, &p_, &q_, &t_, &w_, &candidate_}) v->resize(size);
   if (x.size() != size) x = Eigen::VectorXd::Zero(size);
@@ -130,7 +124,7 @@ ConjugateGradientReport PreconditionedConjugateGradient::solve(const SymmetricBl
   if (true_norm <= tolerance * b_norm) return report;
 
   // Correction d = S^T u (Jacobi) or S^T K'^-T u (Gauss-Seidel); CG residual rho = S r or K'^-1 S r.
-  scale(r_, ssor ? w_ : rho_);
+  scale(a, r_, ssor ? w_ : rho_);
   if (ssor) forward(a, w_, rho_);
   u_.setZero();
   p_ = rho_;
@@ -140,9 +134,9 @@ ConjugateGradientReport PreconditionedConjugateGradient::solve(const SymmetricBl
   auto check_candidate = [&] {
     if (ssor) {
       backward(a, u_, w_);
-      unscale(w_, t_);
+      unscale(a, w_, t_);
     } else {
-      unscale(u_, t_);
+      unscale(a, u_, t_);
     }
     candidate_ = x + t_;
     a.multiply(candidate_, q_);

@@ -2,7 +2,8 @@
 // 1952; Saad, "Iterative Methods for Sparse Linear Systems", 2nd ed. (2003), Algorithm 9.1 and section 10.2).
 //
 // The matrix is first scaled by its diagonal blocks: D_i = L_i L_i^T (Cholesky of each 6x6 block), S = diag(L_i^-1),
-// A' = S A S^T = I + N + N^T with unit diagonal blocks and strictly lower block part N. CG then solves for the
+// A' = S A S^T = I + N + N^T with unit diagonal blocks and strictly lower block part N; the scaled matrix replaces the
+// plain one in place (block_matrix.hpp). CG then solves for the
 // correction d to the initial guess x0 (A d = b - A x0), with one of two preconditioners:
 //  * block_jacobi: M = D, i.e. plain CG on A'. Every operation is a row gather, parallel over block rows.
 //  * symmetric_gauss_seidel (default): M = K D^-1 K^T, K = D + L (block SSOR, omega = 1), applied with Eisenstat's
@@ -32,9 +33,10 @@ struct ConjugateGradientReport {
 
 class PreconditionedConjugateGradient {
  public:
-  // Factorises the diagonal blocks of a and scales its coupling blocks. Throws NumericalError if a diagonal block
-  // is not positive definite.
-  void prepare(const SymmetricBlockMatrix& a);
+  // Factorises the diagonal blocks of a and scales it in place (SymmetricBlockMatrix::factor_diagonal; a keeps its
+  // products with A). Throws NumericalError if a diagonal block is not positive definite.
+  void prepare(SymmetricBlockMatrix& a);
+  // a: a matrix prepared by prepare() (InputError otherwise).
   ConjugateGradientReport solve(const SymmetricBlockMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                                 double tolerance, int max_iterations, Preconditioner kind);
 
@@ -43,12 +45,10 @@ class PreconditionedConjugateGradient {
   void multiply(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v, Eigen::VectorXd& y) const;  // y = A' v
   void forward(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v, Eigen::VectorXd& y) const;   // K'^-1 v
   void backward(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v, Eigen::VectorXd& y) const;  // K'^-T v
-  void scale(const Eigen::VectorXd& r, Eigen::VectorXd& y) const;    // y = S r
-  void unscale(const Eigen::VectorXd& u, Eigen::VectorXd& y) const;  // y = S^T u
+  static void scale(const SymmetricBlockMatrix& a, const Eigen::VectorXd& r, Eigen::VectorXd& y);    // y = S r
+  static void unscale(const SymmetricBlockMatrix& a, const Eigen::VectorXd& u, Eigen::VectorXd& y);  // y = S^T u
   double dot(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
 
-  std::vector<Matrix6> factor_inverse_;  // L_i^-1
-  std::vector<Matrix6> scaled_;          // L_i^-1 C_k L_j^-T per link k = (i, j)
   Eigen::VectorXd r_, rho_, u_, p_, q_, t_, w_, candidate_;
   std::vector<double> chunk_sums_;
 };

@@ -64,32 +64,9 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
   }
   matrix_.set_structure(n, links_);
   const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(links_.size());
-  resize_with_headroom(self_i_, nl);
-  resize_with_headroom(self_j_, nl);
-  resize_with_headroom(strain_, nl);
+  resize_with_headroom(on_j_, nl);
 
-  // Pair blocks (R_lub is zero beyond the outer cutoff): each link writes only its own slots.
-#pragma omp parallel for schedule(static) if (nl > 256)
-  for (std::ptrdiff_t l = 0; l < nl; ++l) {
-    const std::size_t k = link_pair_[l];
-    const ActivePair& pr = pairs[k];
-    const hydro::PairLubrication& lub = law_(species[pr.i], species[pr.j]);
-    const double gap = pr.geometry.gap();
-    hydro::Matrix12 r = lub.resistance(pr.geometry.n, gap);
-    strain_[l] = lub.strain_forces(pr.geometry.n, gap, flow.strain_rate(p.position[pr.i]),
-                                   flow.strain_rate(p.position[pr.j]));
-    if (stiff(implicit, k)) {  // backward-Euler contact terms (implicit_contacts.hpp)
-      const ContactStep c = contact_step(pr.geometry, p.position[pr.i], (*implicit.stiffness)[k], implicit.dt, flow);
-      r += c.resistance();
-      strain_[l] += c.ambient_force();
-    }
-    self_i_[l].pack(r.block<6, 6>(0, 0));
-    self_j_[l].pack(r.block<6, 6>(6, 6));
-    matrix_.coupling()[l] = r.block<6, 6>(0, 6);
-  }
-
-  // Block rows: Stokes drag + the pair self blocks; right-hand side F_nh + Faxen + strain forces, summed in link
-  // order within each row.
+  // Block rows: Stokes drag; right-hand side F_nh + Faxen.
   rhs_.resize(6 * static_cast<Eigen::Index>(n));
   const std::ptrdiff_t nn = static_cast<std::ptrdiff_t>(n);
 #pragma omp parallel for schedule(static) if (nn > 512)
@@ -99,18 +76,46 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
     Matrix6& d = matrix_.diagonal()[i];
     d.setZero();
     d.diagonal() << s.translation, s.translation, s.translation, s.rotation, s.rotation, s.rotation;
-    Vector6 b;
-    b << force[i] + s.translation * (a * a / 6.0) * flow.velocity_laplacian(p.position[i]), torque[i];
-    for (const auto* e = matrix_.row_begin(i); e != matrix_.row_end(i); ++e) {
-      if (e->transposed) {  // this particle is the link's j
-        self_j_[e->link].add_to(d);
-        b += strain_[e->link].segment<6>(6);
-      } else {
-        self_i_[e->link].add_to(d);
-        b += strain_[e->link].segment<6>(0);
+    rhs_.segment<3>(6 * i) = force[i] + s.translation * (a * a / 6.0) * flow.velocity_laplacian(p.position[i]);
+    rhs_.segment<3>(6 * i + 3) = torque[i];
+  }
+
+  // Pair blocks (R_lub is zero beyond the outer cutoff), a chunk of links at a time: each link writes its coupling
+  // block and its self blocks and strain forces into the chunk (in parallel), then the chunk is added to its rows
+  // in link order (sequentially: the sums do not depend on the thread count). Only the force rows of j's self
+  // block and strain force are kept, for the stress.
+  for (std::ptrdiff_t start = 0; start < nl; start += assembly_chunk) {
+    const std::ptrdiff_t count = std::min<std::ptrdiff_t>(assembly_chunk, nl - start);
+    chunk_.resize(static_cast<std::size_t>(count));
+#pragma omp parallel for schedule(static) if (count > 256)
+    for (std::ptrdiff_t c = 0; c < count; ++c) {
+      const std::ptrdiff_t l = start + c;
+      const std::size_t k = link_pair_[l];
+      const ActivePair& pr = pairs[k];
+      const hydro::PairLubrication& lub = law_(species[pr.i], species[pr.j]);
+      const double gap = pr.geometry.gap();
+      hydro::Matrix12 r = lub.resistance(pr.geometry.n, gap);
+      hydro::Vector12 strain = lub.strain_forces(pr.geometry.n, gap, flow.strain_rate(p.position[pr.i]),
+                                                 flow.strain_rate(p.position[pr.j]));
+      if (stiff(implicit, k)) {  // backward-Euler contact terms (implicit_contacts.hpp)
+        const ContactStep cs = contact_step(pr.geometry, p.position[pr.i], (*implicit.stiffness)[k], implicit.dt, flow);
+        r += cs.resistance();
+        strain += cs.ambient_force();
       }
+      ChunkLink& out = chunk_[c];
+      out.self_i.pack(r.block<6, 6>(0, 0));
+      out.self_j.pack(r.block<6, 6>(6, 6));
+      out.strain = strain;
+      matrix_.coupling()[l] = r.block<6, 6>(0, 6);
+      on_j_[l] = {r.block<3, 6>(6, 6), strain.segment<3>(6)};
     }
-    rhs_.segment<6>(6 * i) = b;
+    for (std::ptrdiff_t c = 0; c < count; ++c) {
+      const BlockLink& link = links_[start + c];
+      chunk_[c].self_i.add_to(matrix_.diagonal()[link.i]);
+      chunk_[c].self_j.add_to(matrix_.diagonal()[link.j]);
+      rhs_.segment<6>(6 * static_cast<Eigen::Index>(link.i)) += chunk_[c].strain.segment<6>(0);
+      rhs_.segment<6>(6 * static_cast<Eigen::Index>(link.j)) += chunk_[c].strain.segment<6>(6);
+    }
   }
 }
 
@@ -270,9 +275,9 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
     const Vector6 dv_i = x.segment<6>(6 * static_cast<Eigen::Index>(pr.i));
     const Vector6 dv_j = x.segment<6>(6 * static_cast<Eigen::Index>(pr.j));
     // The blocks hold lubrication + implicit contact terms; the contact change is taken out of the force on j.
-    Vector6 f_j = -(matrix_.coupling()[l].transpose() * dv_i + self_j_[l].unpacked() * dv_j);
-    if (strain_driven) f_j += strain_[l].segment<6>(6);
-    out.lubrication_force_on_j[k] = f_j.head<3>();
+    Vec3 f_j = -(matrix_.coupling_transpose_times(l, dv_i).head<3>() + on_j_[l].self_force_rows * dv_j);
+    if (strain_driven) f_j += on_j_[l].strain_force;
+    out.lubrication_force_on_j[k] = f_j;
     if (stiff(implicit, k)) {
       hydro::Vector12 dv;
       dv << dv_i, dv_j;

@@ -26,8 +26,10 @@
 // conjugate_gradient.hpp) warm-started from the previous solution (default), or sparse Cholesky keeping the symbolic analysis while the pair pattern is unchanged. Deterministic: the result
 // depends only on the inputs (and, for the warm start, the previous call), not on the thread count.
 // Workspaces are kept between calls: no allocation per step once the largest pair count has been seen.
-// Memory per link: the coupling block (in the matrix), the two self blocks packed as symmetric (21 values each)
-// and the strain forces; the force-dipole stress is summed from the pair forces without a per-pair tensor.
+// Memory per link: the coupling block (in the matrix, in the conjugate gradient's scaled form), and the force rows
+// of j's self block and j's strain force (21 values, for the stress); the self blocks and strain forces are added to
+// their rows a chunk of links at a time. The force-dipole stress is summed from the pair forces without a per-pair
+// tensor.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -186,11 +188,22 @@ class ResistanceSolver {
   ResistanceSolverParams params_;
   SpeciesLubrication law_;
 
-  // Per link (pair with a block in the matrix): its pair index, its own diagonal contributions and strain forces.
+  // Per link (pair with a block in the matrix): its pair index, and what the stress needs of it beside the coupling
+  // block: the force rows of j's self block and j's strain force.
+  struct ForceOnJ {
+    Eigen::Matrix<double, 3, 6> self_force_rows;
+    Vec3 strain_force;
+  };
+  // A link's contributions to its two rows, for a chunk of links at a time (assemble()).
+  struct ChunkLink {
+    PackedSymmetric6 self_i, self_j;
+    hydro::Vector12 strain;
+  };
+  static constexpr std::ptrdiff_t assembly_chunk = 2048;
   std::vector<BlockLink> links_;
   std::vector<std::uint32_t> link_pair_;
-  std::vector<PackedSymmetric6> self_i_, self_j_;
-  std::vector<hydro::Vector12> strain_;
+  std::vector<ForceOnJ> on_j_;
+  std::vector<ChunkLink> chunk_;
   std::vector<std::int32_t> pair_link_;  // per pair: its link, or -1 (beyond the outer cutoff, CG)
   std::size_t lubricated_ = 0;
 
