@@ -141,7 +141,8 @@ double Simulation::pair_rate(double rate) const {
   if (ts.mode == TimeStepParams::Mode::fixed || ts.bound != TimeStepParams::Bound::pairs) return 0.0;
   const PairMotionLimits limits{contact_displacement(ts, params_.contact, contacts_.sums().mean_compliance()),
                                 ts.max_displacement, contact_range(params_.contact), ts.gap_change};
-  return pair_motion_rate(contacts_.pairs(), state_.particles, rate * box_.length().y(), contacts_.records(), limits);
+  return pair_motion_rate(contacts_.pairs(), state_.particles, rate * box_.length().y(), contacts_.records(), limits,
+                          bound_rank(state_.particles.size(), ts.fastest_of), &pair_rates_);
 }
 
 double Simulation::next_time_step(double max_speed) const {

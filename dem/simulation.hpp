@@ -143,7 +143,8 @@ class Simulation {
   double rate_ = 1.0;
   int iterations_ = 0;
   double residual_ = 0.0;
-  std::vector<double> speeds_;  // scratch of nonaffine_bounding_speed
+  std::vector<double> speeds_;                // scratch of nonaffine_bounding_speed
+  mutable std::vector<double> pair_rates_;    // scratch of pair_rate
   std::vector<Vec3> nonaffine_;
   StressTensors stress_;
   double dt_ = 0.0;

@@ -13,6 +13,7 @@
 // The caller adds the particle bound (largest non-affine displacement) and the strain increment.
 // Units: lengths a_1, velocities gammadot_ref a_1, times 1/gammadot_ref.
 #pragma once
+#include <cstddef>
 #include <vector>
 
 #include "core/particles.hpp"
@@ -27,10 +28,12 @@ struct PairMotionLimits {
   double gap_change;            // the fraction of its distance to contact a pair may close per step, > 0
 };
 
-// max over pairs of (relative speed / allowed displacement): the step must be at most its inverse (0: no pair
-// moves). image_velocity: the Lees-Edwards velocity of the image of j per y image (gammadot L_y); records: the
-// contact stage's per-pair records (which pairs are in contact), same order as pairs.
+// The rank-th largest over pairs (the largest for rank 1) of (relative speed / allowed displacement): the step must
+// be at most its inverse (0: no pair moves). image_velocity: the Lees-Edwards velocity of the image of j per y image
+// (gammadot L_y); records: the contact stage's per-pair records (which pairs are in contact), same order as pairs;
+// scratch: the per-pair rates when rank > 1 (time_step_control.hpp, bound_rank).
 double pair_motion_rate(const std::vector<ActivePair>& pairs, const Particles& p, double image_velocity,
-                        const std::vector<ContactRecord>& records, const PairMotionLimits& limits);
+                        const std::vector<ContactRecord>& records, const PairMotionLimits& limits,
+                        std::size_t rank = 1, std::vector<double>* scratch = nullptr);
 
 }  // namespace suspend

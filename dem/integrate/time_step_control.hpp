@@ -8,9 +8,10 @@
 //    an extreme value that grows with N (sqrt(ln N) for Gaussian tails), so a bound on it alone makes the step of a
 //    larger box shorter at the same physics; the k-th fastest is a quantile and does not. Below 2 fastest_of
 //    particles it is the fastest of all, as before this rule; fastest_of = 0: the fastest of all at any N;
-//  * bound = pairs (default): the relative motion of every interacting pair (pair_motion.hpp): a contact's normal
+//  * bound = pairs (default): the relative motion of the interacting pairs (pair_motion.hpp): a contact's normal
 //    displacement at most the contact displacement below, its slip at most max_displacement, and an approaching
-//    pair closes at most a fraction gap_change of its distance to contact. bound = particles (the rule before
+//    pair closes at most a fraction gap_change of its distance to contact; for all but the fastest of every
+//    `fastest_of` particles' pairs (the k-th fastest pair, the same k as for the particles), for the same reason. bound = particles (the rule before
 //    issue 35): every particle's non-affine displacement at most the contact displacement, which is what a pair in
 //    contact needs, so the fastest particle anywhere sets the step for all;
 //  * the contact displacement: max_displacement, for a law with a finite contact range such as the Hertz roughness
@@ -65,15 +66,25 @@ struct TimeStepParams {
   }
 };
 
-// The speed the displacement bound applies to (see above): the k-th largest of `speeds`, k = N / fastest_of, at
-// least 1; the largest when fastest_of is 0. Reorders `speeds`.
-inline double bounding_speed(std::vector<double>& speeds, int fastest_of) {
-  if (speeds.empty()) return 0.0;
-  const std::size_t k = fastest_of > 0 ? std::max<std::size_t>(1, speeds.size() / fastest_of) : 1;
-  if (k == 1) return *std::max_element(speeds.begin(), speeds.end());
-  const auto kth = speeds.begin() + static_cast<std::ptrdiff_t>(k - 1);
-  std::nth_element(speeds.begin(), kth, speeds.end(), std::greater<>());
+// The rank the motion bounds apply to: the fastest of every fastest_of particles, i.e. the k-th fastest particle and
+// the k-th fastest pair, k = N / fastest_of, at least 1 (1 when fastest_of is 0).
+inline std::size_t bound_rank(std::size_t particles, int fastest_of) {
+  return fastest_of > 0 ? std::max<std::size_t>(1, particles / static_cast<std::size_t>(fastest_of)) : 1;
+}
+
+// The k-th largest of `values` (k >= 1; 0 if empty); reorders them.
+inline double kth_largest(std::vector<double>& values, std::size_t k) {
+  if (values.empty()) return 0.0;
+  if (k <= 1) return *std::max_element(values.begin(), values.end());
+  const auto kth = values.begin() + static_cast<std::ptrdiff_t>(std::min(k, values.size()) - 1);
+  std::nth_element(values.begin(), kth, values.end(), std::greater<>());
   return *kth;
+}
+
+// The speed the displacement bound applies to (see above): the k-th largest of the particles' `speeds`, k =
+// bound_rank. Reorders `speeds`.
+inline double bounding_speed(std::vector<double>& speeds, int fastest_of) {
+  return kth_largest(speeds, bound_rank(speeds.size(), fastest_of));
 }
 
 // The contact law's own range (no surface forces): the Hertz roughness height, 0 for laws acting on overlap.

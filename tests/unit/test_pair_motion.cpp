@@ -56,6 +56,33 @@ TEST(PairMotion, AnApproachingPairClosesAFractionOfItsDistanceToContact) {
   EXPECT_NEAR(pair_motion_rate({active(q, 1)}, q, 1.5, records, limits), 0.0, 1e-15);
 }
 
+TEST(PairMotion, RankTwoIsTheSecondFastestPair) {
+  // Particles 0-1 in contact closing at 0.1 (rate 200), 2-3 out of contact approaching at 0.1 across a gap of 0.205
+  // (rate 0.1 / 0.0205), 4-5 in contact sliding at 0.6 (rate 300).
+  Particles p = test_support::state_of({Vec3(5, 5, 5), Vec3(7.001, 5, 5), Vec3(5, 9, 5), Vec3(7.205, 9, 5),
+                                        Vec3(5, 13, 5), Vec3(7.001, 13, 5)},
+                                       {1, 1, 1, 1, 1, 1})
+                    .particles;
+  p.velocity[1] = Vec3(-0.1, 0.0, 0.0);
+  p.velocity[3] = Vec3(-0.1, 0.0, 0.0);
+  p.velocity[5] = Vec3(0.0, 0.6, 0.0);
+  auto pair = [&](int i, int j) {
+    return ActivePair{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j), 0,
+                      PairGeometry::from(p.position[j] - p.position[i], 1.0, 1.0)};
+  };
+  const std::vector<ActivePair> pairs{pair(0, 1), pair(2, 3), pair(4, 5)};
+  std::vector<ContactRecord> records(3);
+  records[0].contact = records[2].contact = true;
+  std::vector<double> scratch;
+  EXPECT_DOUBLE_EQ(pair_motion_rate(pairs, p, 0.0, records, limits), 0.6 / 2e-3);
+  EXPECT_DOUBLE_EQ(pair_motion_rate(pairs, p, 0.0, records, limits, 1, &scratch), 0.6 / 2e-3);
+  EXPECT_DOUBLE_EQ(pair_motion_rate(pairs, p, 0.0, records, limits, 2, &scratch), 0.1 / 5e-4);
+  EXPECT_NEAR(pair_motion_rate(pairs, p, 0.0, records, limits, 3, &scratch), 0.1 / (5e-4 + 0.1 * 0.2), 1e-12);
+  EXPECT_EQ(bound_rank(999, 500), 1u);
+  EXPECT_EQ(bound_rank(2000, 500), 4u);
+  EXPECT_EQ(bound_rank(65536, 0), 1u);
+}
+
 TEST(PairMotion, PairsBoundFollowsTheFastestPairNotTheFastestParticle) {
   TimeStepParams ts;
   ts.implicit_contacts = true;
