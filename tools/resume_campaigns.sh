@@ -28,13 +28,19 @@
 # The same campaigns run by the engine before issue 35 (runs/step_*_before) need a binary built at 2fbb67f: set
 # SUSPEND_BEFORE to it (e.g. `git worktree add /tmp/base 2fbb67f && bash /tmp/base/scripts/build.sh /tmp/base/build`)
 # and they are resumed first (their committed tables: results/step_control/*_before).
-# usage: [SUSPEND_BEFORE=BIN] tools/resume_campaigns.sh [SUSPEND (default build/bin/suspend)] [RUNS (default runs)]
+# The campaigns keep the binary they run with: without SUSPEND, an existing RUNS/bin/suspend-campaign is kept, so
+# that a point resumed from its checkpoint continues bit for bit whatever was built since; give SUSPEND (e.g.
+# build/bin/suspend) to replace it, which a change of results needs (the new binary then runs every point not yet
+# finished). The first resume on a machine copies build/bin/suspend.
+# usage: [SUSPEND_BEFORE=BIN] tools/resume_campaigns.sh [SUSPEND (default: keep RUNS/bin/suspend-campaign, else
+#        build/bin/suspend)] [RUNS (default runs)]
 set -euo pipefail
 if [[ ${1:-} == -h || ${1:-} == --help ]]; then awk 'NR > 1 && !/^#/ {exit} NR > 1 {sub(/^# ?/, ""); print}' "$0"; exit 0; fi
 root=$(cd "$(dirname "$0")/.." && pwd)
-suspend=${1:-$root/build/bin/suspend}
+suspend=${1:-}
 runs=${2:-$root/runs}
-if [[ ! -x $suspend ]]; then echo "error: $suspend not found; build first (see README)" >&2; exit 2; fi
+if [[ -z $suspend && ! -x $runs/bin/suspend-campaign ]]; then suspend=$root/build/bin/suspend; fi
+if [[ -n $suspend && ! -x $suspend ]]; then echo "error: $suspend not found; build first (see README)" >&2; exit 2; fi
 mkdir -p "$runs/bin"
 # One chain at a time: a second would run its points beside the first's (four runs on two cores).
 if pgrep -f "$runs/bin/suspend-campaign sweep" > /dev/null; then
@@ -44,8 +50,12 @@ if pgrep -f "$runs/bin/suspend-campaign sweep" > /dev/null; then
 fi
 # copy then rename: never a half-written binary at the path; a running sweep starts its later points with the new
 # one (it runs the path, campaign/sweep.hpp own_executable)
-cp "$suspend" "$runs/bin/suspend-campaign.new"
-mv -f "$runs/bin/suspend-campaign.new" "$runs/bin/suspend-campaign"
+if [[ -z $suspend ]]; then
+  echo "keeping the campaign binary $runs/bin/suspend-campaign (give a SUSPEND to replace it)"
+else
+  cp "$suspend" "$runs/bin/suspend-campaign.new"
+  mv -f "$runs/bin/suspend-campaign.new" "$runs/bin/suspend-campaign"
+fi
 # name | campaign file | committed table
 campaigns=(
   "pairwise_boundary|$root/cases/phim/pairwise_boundary.yaml|$root/results/phim/pairwise_boundary/campaign.json"
