@@ -9,6 +9,7 @@
 #include "core/capacity.hpp"
 #include "core/error.hpp"
 #include "dem/hydro/stokes_drag.hpp"
+#include "dem/integrate/cell_order.hpp"
 
 namespace suspend {
 
@@ -43,24 +44,41 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
   const std::size_t n = p.size();
   const bool keep_inactive = params_.solver == LinearSolver::cholesky;  // stable pattern for the analysis
 
-  // Links: pairs that get a block, in list order.
-  links_.clear();
-  link_pair_.clear();
+  // Rows in cell order (cell_order.hpp) for the conjugate gradient; Cholesky keeps the particles' order, so that its
+  // pattern (and analysis) survives while the pairs do.
+  if (keep_inactive) {
+    row_of_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) row_of_[i] = static_cast<std::uint32_t>(i);
+  } else {
+    cell_order(p.position, 2.0, row_of_, order_scratch_);
+  }
+
+  // Links: pairs that get a block, by their first row (ties in list order), so that a sweep over the rows reads
+  // the blocks nearly in storage order.
   lubricated_ = 0;
   resize_with_headroom(pair_link_, pairs.size());
+  link_count_.assign(n + 1, 0);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const ActivePair& pr = pairs[k];
     const bool active = law_.active(pr, species);
     lubricated_ += active ? 1 : 0;
     if (active || keep_inactive || stiff(implicit, k)) {
-      pair_link_[k] = static_cast<std::int32_t>(links_.size());
-      reserve_one_more(links_);
-      reserve_one_more(link_pair_);
-      links_.push_back({pr.i, pr.j});
-      link_pair_.push_back(static_cast<std::uint32_t>(k));
+      pair_link_[k] = 0;
+      ++link_count_[std::min(row_of_[pr.i], row_of_[pr.j]) + 1];
     } else {
       pair_link_[k] = -1;
     }
+  }
+  for (std::size_t r = 0; r < n; ++r) link_count_[r + 1] += link_count_[r];
+  resize_with_headroom(links_, link_count_[n]);
+  resize_with_headroom(link_pair_, link_count_[n]);
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (pair_link_[k] < 0) continue;
+    const ActivePair& pr = pairs[k];
+    const std::uint32_t l = link_count_[std::min(row_of_[pr.i], row_of_[pr.j])]++;
+    pair_link_[k] = static_cast<std::int32_t>(l);
+    links_[l] = {row_of_[pr.i], row_of_[pr.j]};
+    link_pair_[l] = static_cast<std::uint32_t>(k);
   }
   matrix_.set_structure(n, links_);
   const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(links_.size());
@@ -73,11 +91,12 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
   for (std::ptrdiff_t i = 0; i < nn; ++i) {
     const double a = p.radius[i];
     const hydro::StokesResistance s = hydro::stokes_resistance(a);
-    Matrix6& d = matrix_.diagonal()[i];
+    const std::ptrdiff_t r = row_of_[i];
+    Matrix6& d = matrix_.diagonal()[r];
     d.setZero();
     d.diagonal() << s.translation, s.translation, s.translation, s.rotation, s.rotation, s.rotation;
-    rhs_.segment<3>(6 * i) = force[i] + s.translation * (a * a / 6.0) * flow.velocity_laplacian(p.position[i]);
-    rhs_.segment<3>(6 * i + 3) = torque[i];
+    rhs_.segment<3>(6 * r) = force[i] + s.translation * (a * a / 6.0) * flow.velocity_laplacian(p.position[i]);
+    rhs_.segment<3>(6 * r + 3) = torque[i];
   }
 
   // Pair blocks (R_lub is zero beyond the outer cutoff), a chunk of links at a time: each link writes its coupling
@@ -170,6 +189,31 @@ void ResistanceSolver::solve_assembled(const Eigen::VectorXd& b, Eigen::VectorXd
   }
 }
 
+void ResistanceSolver::to_rows(const Eigen::VectorXd& v, Eigen::VectorXd& rows) const {
+  rows.resize(v.size());
+  for (std::size_t i = 0; i < row_of_.size(); ++i) rows.segment<6>(6 * Eigen::Index(row_of_[i])) = v.segment<6>(6 * Eigen::Index(i));
+}
+
+void ResistanceSolver::from_rows(const Eigen::VectorXd& rows, Eigen::VectorXd& v) const {
+  v.resize(rows.size());
+  for (std::size_t i = 0; i < row_of_.size(); ++i) v.segment<6>(6 * Eigen::Index(i)) = rows.segment<6>(6 * Eigen::Index(row_of_[i]));
+}
+
+void ResistanceSolver::solve_in_particle_order(const Eigen::VectorXd& b, Eigen::VectorXd& x, HydroResponse& out,
+                                               std::string_view context) {
+  if (x.size() == b.size())
+    to_rows(x, x_);
+  else
+    x_.resize(0);
+  try {
+    solve_assembled(b, x_, out, context);
+  } catch (...) {
+    x.resize(0);  // do not warm-start from a failed solve
+    throw;
+  }
+  from_rows(x_, x);
+}
+
 void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species, const std::vector<ActivePair>& pairs,
                              const AmbientFlow& flow, const std::vector<Vec3>& force,
                              const std::vector<Vec3>& torque, SolveResult& out, std::string_view context,
@@ -177,7 +221,7 @@ void ResistanceSolver::solve(const Particles& p, const std::vector<int>& species
   check(p, species, pairs, force, torque, implicit);
   assemble(p, species, pairs, flow, force, torque, implicit);
   factorize();
-  solve_assembled(rhs_, previous_, out, context);
+  solve_in_particle_order(rhs_, previous_, out, context);
   report_solution(p, species, pairs, flow, previous_, true, out, implicit);
 }
 
@@ -191,17 +235,18 @@ void ResistanceSolver::solve_parts(const Particles& p, const std::vector<int>& s
   zero_.assign(n, Vec3::Zero());
   assemble(p, species, pairs, unit_flow, zero_, zero_, implicit);
   factorize();
-  solve_assembled(rhs_, previous_, unit_out, context);
+  solve_in_particle_order(rhs_, previous_, unit_out, context);
   report_solution(p, species, pairs, unit_flow, previous_, true, unit_out, implicit);
   // The same matrix; the load of the contact forces alone (Faxen of the still flow, no strain forces).
   forced_rhs_.resize(6 * static_cast<Eigen::Index>(n));
   for (std::size_t i = 0; i < n; ++i) {
     const double a = p.radius[i];
-    forced_rhs_.segment<3>(6 * static_cast<Eigen::Index>(i)) =
+    const Eigen::Index r = row_of_[i];
+    forced_rhs_.segment<3>(6 * r) =
         force[i] + hydro::stokes_resistance(a).translation * (a * a / 6.0) * still_flow.velocity_laplacian(p.position[i]);
-    forced_rhs_.segment<3>(6 * static_cast<Eigen::Index>(i) + 3) = torque[i];
+    forced_rhs_.segment<3>(6 * r + 3) = torque[i];
   }
-  solve_assembled(forced_rhs_, forced_previous_, force_out, context);
+  solve_in_particle_order(forced_rhs_, forced_previous_, force_out, context);
   report_solution(p, species, pairs, still_flow, forced_previous_, false, force_out, implicit);
 }
 
@@ -229,8 +274,10 @@ void ResistanceSolver::explicit_forces(const Particles& p, const std::vector<int
     throw InputError("resistance solver: species and dv need one entry (dv: six) per particle");
   zero_.assign(n, Vec3::Zero());
   assemble(p, species, pairs, flow, zero_, zero_);
-  matrix_.multiply(dv, check_);
-  force = rhs_ - check_;
+  to_rows(dv, x_);
+  matrix_.multiply(x_, check_);
+  x_ = rhs_ - check_;
+  from_rows(x_, force);
   previous_ = dv;
   out.iterations = 0;
   out.residual = 0.0;
@@ -239,9 +286,10 @@ void ResistanceSolver::explicit_forces(const Particles& p, const std::vector<int
 
 double ResistanceSolver::relaxation_rate(const std::vector<double>& mass, const std::vector<double>& moment) const {
   double rate = 0.0;
-  for (std::size_t i = 0; i < matrix_.block_rows(); ++i) {
-    Vector6 row = matrix_.diagonal()[i].cwiseAbs().rowwise().sum();
-    for (const auto* e = matrix_.row_begin(i); e != matrix_.row_end(i); ++e) {
+  for (std::size_t i = 0; i < matrix_.block_rows(); ++i) {  // particle i, row r
+    const std::size_t r = row_of_[i];
+    Vector6 row = matrix_.diagonal()[r].cwiseAbs().rowwise().sum();
+    for (const auto* e = matrix_.row_begin(r); e != matrix_.row_end(r); ++e) {
       const Matrix6& c = matrix_.coupling()[e->link];
       row += e->transposed ? Vector6(c.transpose().cwiseAbs().rowwise().sum()) : Vector6(c.cwiseAbs().rowwise().sum());
     }

@@ -156,9 +156,14 @@ class ResistanceSolver {
   void set_forced_warm_start(const Eigen::VectorXd& dv) { forced_previous_ = dv; }
 
   const ResistanceSolverParams& params() const { return params_; }
-  // The matrix and right-hand side of the last solve, and its solution dV (for tests and diagnostics).
+  // The matrix and right-hand side of the last solve, their block rows in row_of() order (particle i is block row
+  // row_of()[i]; cell_order.hpp), and its solution dV in the particles' order (for tests and diagnostics).
   const SymmetricBlockMatrix& matrix() const { return matrix_; }
   const Eigen::VectorXd& right_hand_side() const { return rhs_; }
+  const std::vector<std::uint32_t>& row_of() const { return row_of_; }
+  // v (6 per particle, in the particles' order) in block-row order, and back.
+  void to_rows(const Eigen::VectorXd& v, Eigen::VectorXd& rows) const;
+  void from_rows(const Eigen::VectorXd& rows, Eigen::VectorXd& v) const;
   const Eigen::VectorXd& disturbance() const { return previous_; }
   const Eigen::VectorXd& forced_disturbance() const { return forced_previous_; }
   int pattern_analyses() const { return cholesky_.analyses(); }
@@ -174,6 +179,9 @@ class ResistanceSolver {
              const std::vector<Vec3>& force, const std::vector<Vec3>& torque, const ImplicitContacts& implicit) const;
   // The preconditioner set-up (CG) or the factorisation (Cholesky) of the assembled matrix.
   void factorize();
+  // solve_assembled with x (warm start in, solution out) in the particles' order; b in row order.
+  void solve_in_particle_order(const Eigen::VectorXd& b, Eigen::VectorXd& x, HydroResponse& out,
+                               std::string_view context);
   // x = R^-1 b for the assembled matrix, from the warm start x; throws NumericalError naming the context.
   void solve_assembled(const Eigen::VectorXd& b, Eigen::VectorXd& x, HydroResponse& out, std::string_view context);
   // Lab-frame velocities of the disturbance x, and the stress sums, into out; strain_driven: the assembled strain
@@ -207,8 +215,10 @@ class ResistanceSolver {
   std::vector<std::int32_t> pair_link_;  // per pair: its link, or -1 (beyond the outer cutoff, CG)
   std::size_t lubricated_ = 0;
 
+  std::vector<std::uint32_t> row_of_, order_scratch_;  // block row of each particle (cell_order.hpp)
+  std::vector<std::uint32_t> link_count_;              // links per first row, then their offsets
   SymmetricBlockMatrix matrix_;
-  Eigen::VectorXd rhs_, previous_, check_;
+  Eigen::VectorXd rhs_, previous_, check_, x_;  // x_: a solution in row order
   Eigen::VectorXd forced_rhs_, forced_previous_;  // the force-driven part of solve_parts
   std::vector<Vec3> zero_;
   PreconditionedConjugateGradient cg_;

@@ -368,8 +368,9 @@ TEST(ResistanceSolver, ConjugateGradientAgreesWithCholeskyAndBalancesForces) {
     EXPECT_LT((a.stress[Contribution::lubrication] - b.stress[Contribution::lubrication]).norm(),
               1e-8 * b.stress[Contribution::lubrication].norm());
     // The reported residual is the true one.
-    Eigen::VectorXd ax;
-    cg.matrix().multiply(cg.disturbance(), ax);
+    Eigen::VectorXd ax, x;
+    cg.to_rows(cg.disturbance(), x);  // the matrix's rows are in cell order
+    cg.matrix().multiply(x, ax);
     EXPECT_NEAR((cg.right_hand_side() - ax).norm() / cg.right_hand_side().norm(), a.residual, 1e-15);
   }
   const ResistanceSolver& cg = chol;
