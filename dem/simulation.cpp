@@ -178,7 +178,8 @@ void Simulation::evaluate() {
   ImplicitContacts implicit;
   if (params_.time_step.implicit_contacts) {
     dt_ = overdamped_time_step(params_.time_step, params_.contact, state_.shear_rate,
-                               nonaffine_bounding_speed(p, flow(state_.shear_rate), params_.time_step.fastest_of, speeds_), a_min_, state_.last_dt,
+                               nonaffine_bounding_speed(p, flow(state_.shear_rate), params_.time_step.fastest_of, speeds_),
+                               a_min_, state_.last_dt,
                                contacts_.sums().mean_compliance(), pair_rate(state_.shear_rate));
     dt_ = std::min(dt_, params_.flow.max_time_step(state_.time));
     implicit = {&contacts_.stiffness(), dt_};

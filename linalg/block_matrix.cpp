@@ -92,7 +92,8 @@ void SymmetricBlockMatrix::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y
   // zeros above its diagonal, so the full 6x6 products (vectorised) give the triangular ones.
   scaled_x_.resize(x.size());
 #pragma omp parallel for schedule(static) if (n > 512)
-  for (std::ptrdiff_t r = 0; r < n; ++r) scaled_x_.segment<6>(6 * r).noalias() = diagonal_[r].transpose() * x.segment<6>(6 * r);
+  for (std::ptrdiff_t r = 0; r < n; ++r)
+    scaled_x_.segment<6>(6 * r).noalias() = diagonal_[r].transpose() * x.segment<6>(6 * r);
 #pragma omp parallel for schedule(static) if (n > 512)
   for (std::ptrdiff_t r = 0; r < n; ++r) {
     Vector6 acc = scaled_x_.segment<6>(6 * r);

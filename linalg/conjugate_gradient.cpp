@@ -1,10 +1,8 @@
 #include "linalg/conjugate_gradient.hpp"
 
-#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 
-#include "core/capacity.hpp"
 #include "core/error.hpp"
 
 namespace suspend {
@@ -21,6 +19,15 @@ inline void subtract(const Entry& e, const std::vector<Matrix6>& blocks, const E
     acc.noalias() -= blocks[e.link].transpose() * xc;
   else
     acc.noalias() -= blocks[e.link] * xc;
+}
+// y_i = in_i, then solve(L_i, y_i), for every block row i (L_i: the factor a holds in scaled form).
+template <class Solve>
+void for_each_block(const SymmetricBlockMatrix& a, const Eigen::VectorXd& in, Eigen::VectorXd& y, Solve solve) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.block_rows());
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    y.segment<6>(6 * i) = in.segment<6>(6 * i);
+    solve(a.diagonal()[i], y.segment<6>(6 * i));
+  }
 }
 }  // namespace
 
@@ -63,22 +70,12 @@ void PreconditionedConjugateGradient::backward(const SymmetricBlockMatrix& a, co
 
 void PreconditionedConjugateGradient::scale(const SymmetricBlockMatrix& a, const Eigen::VectorXd& r,
                                             Eigen::VectorXd& y) {
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.block_rows());
-  for (std::ptrdiff_t i = 0; i < n; ++i)
-  {
-    y.segment<6>(6 * i) = r.segment<6>(6 * i);
-    solve_lower(a.diagonal()[i], y.segment<6>(6 * i));
-  }
+  for_each_block(a, r, y, [](const Matrix6& l, auto&& v) { solve_lower(l, v); });
 }
 
 void PreconditionedConjugateGradient::unscale(const SymmetricBlockMatrix& a, const Eigen::VectorXd& u,
                                               Eigen::VectorXd& y) {
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.block_rows());
-  for (std::ptrdiff_t i = 0; i < n; ++i)
-  {
-    y.segment<6>(6 * i) = u.segment<6>(6 * i);
-    solve_lower_transpose(a.diagonal()[i], y.segment<6>(6 * i));
-  }
+  for_each_block(a, u, y, [](const Matrix6& l, auto&& v) { solve_lower_transpose(l, v); });
 }
 
 double PreconditionedConjugateGradient::dot(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {

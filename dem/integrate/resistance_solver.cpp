@@ -63,7 +63,7 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
     const bool active = law_.active(pr, species);
     lubricated_ += active ? 1 : 0;
     if (active || keep_inactive || stiff(implicit, k)) {
-      pair_link_[k] = 0;
+      pair_link_[k] = 0;  // has a link; which one is set below
       ++link_count_[std::min(row_of_[pr.i], row_of_[pr.j]) + 1];
     } else {
       pair_link_[k] = -1;
@@ -191,12 +191,14 @@ void ResistanceSolver::solve_assembled(const Eigen::VectorXd& b, Eigen::VectorXd
 
 void ResistanceSolver::to_rows(const Eigen::VectorXd& v, Eigen::VectorXd& rows) const {
   rows.resize(v.size());
-  for (std::size_t i = 0; i < row_of_.size(); ++i) rows.segment<6>(6 * Eigen::Index(row_of_[i])) = v.segment<6>(6 * Eigen::Index(i));
+  for (std::size_t i = 0; i < row_of_.size(); ++i)
+    rows.segment<6>(6 * Eigen::Index(row_of_[i])) = v.segment<6>(6 * Eigen::Index(i));
 }
 
 void ResistanceSolver::from_rows(const Eigen::VectorXd& rows, Eigen::VectorXd& v) const {
   v.resize(rows.size());
-  for (std::size_t i = 0; i < row_of_.size(); ++i) v.segment<6>(6 * Eigen::Index(i)) = rows.segment<6>(6 * Eigen::Index(row_of_[i]));
+  for (std::size_t i = 0; i < row_of_.size(); ++i)
+    v.segment<6>(6 * Eigen::Index(i)) = rows.segment<6>(6 * Eigen::Index(row_of_[i]));
 }
 
 void ResistanceSolver::solve_in_particle_order(const Eigen::VectorXd& b, Eigen::VectorXd& x, HydroResponse& out,

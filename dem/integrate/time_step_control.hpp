@@ -11,9 +11,9 @@
 //  * bound = pairs (default): the relative motion of the interacting pairs (pair_motion.hpp): a contact's normal
 //    displacement at most the contact displacement below, its slip at most max_displacement, and an approaching
 //    pair closes at most a fraction gap_change of its distance to contact; for all but the fastest of every
-//    `fastest_of` particles' pairs (the k-th fastest pair, the same k as for the particles), for the same reason. bound = particles (the rule before
-//    issue 35): every particle's non-affine displacement at most the contact displacement, which is what a pair in
-//    contact needs, so the fastest particle anywhere sets the step for all;
+//    `fastest_of` particles' pairs (the k-th fastest pair, the same k as for the particles), for the same reason.
+//    bound = particles (the rule before issue 35): every particle's non-affine displacement at most the contact
+//    displacement, which is what a pair in contact needs, so the fastest particle anywhere sets the step for all;
 //  * the contact displacement: max_displacement, for a law with a finite contact range such as the Hertz roughness
 //    layer h_r at most a tenth of that range (so a pair cannot cross the layer in a step), and with implicit
 //    contacts at most `displacement_per_compliance` mean contact compliance lengths (F_n / (dF_n/d delta), the mean
