@@ -5,10 +5,11 @@
 // (F_ER = 1, lambda_D = 0.02 a_1, cut at 20 lambda_D) and van der Waals attraction (F^R/F^A = 19, cut at 0.5 a_1).
 //
 //   pairwise_step_memory pack FILE [N]                      random packing, written as "x y z radius" lines
-//   pairwise_step_memory step FILE [STEPS [INTEGRATOR [SURFACE]]]
+//   pairwise_step_memory step FILE [STEPS [INTEGRATOR [SURFACE [STORAGE]]]]
 //       reads FILE, runs STEPS full steps (default 5) with INTEGRATOR = overdamped (default: the resistance solve)
 //       or inertial (paper 000 eq. 15 at St = 1e-3, explicit matrix-free hydrodynamics); SURFACE = surface
-//       (default) or none (lubrication + contacts only, the set-up of the first measurements). Prints the
+//       (default) or none (lubrication + contacts only, the set-up of the first measurements); STORAGE = dense
+//       (default) or pair_form, the resistance matrix's coupling blocks (hydrodynamics.solver.storage). Prints the
 //       resident-set baseline before the particles are read, the peak (VmHWM) at the end, (peak - baseline) / N,
 //       and the bytes held by the main per-pair buffers.
 // Threads: OMP_NUM_THREADS (per-thread scratch is part of the peak).
@@ -58,9 +59,11 @@ int pack(const std::string& file, std::size_t n) {
   return 0;
 }
 
-int step(const std::string& file, int steps, const std::string& integrator, const std::string& surface) {
-  if ((integrator != "overdamped" && integrator != "inertial") || (surface != "surface" && surface != "none")) {
-    std::cerr << "INTEGRATOR is overdamped or inertial, SURFACE is surface or none\n";
+int step(const std::string& file, int steps, const std::string& integrator, const std::string& surface,
+         const std::string& storage) {
+  if ((integrator != "overdamped" && integrator != "inertial") || (surface != "surface" && surface != "none") ||
+      (storage != "dense" && storage != "pair_form")) {
+    std::cerr << "INTEGRATOR is overdamped or inertial, SURFACE is surface or none, STORAGE is dense or pair_form\n";
     return 2;
   }
   const long baseline = status_kb("VmRSS");
@@ -112,6 +115,7 @@ int step(const std::string& file, int steps, const std::string& integrator, cons
   params.contact = law;
   params.lubrication = true;
   params.resistance.lubrication.outer_cutoff = 0.25;
+  if (storage == "pair_form") params.resistance.storage = CouplingStorage::pair_form;
   if (integrator == "inertial") {
     params.integrator = Integrator::inertial;
     params.stokes_number = 1.0e-3;
@@ -125,9 +129,10 @@ int step(const std::string& file, int steps, const std::string& integrator, cons
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const long peak = status_kb("VmHWM");
-  std::printf("N %zu, %s%s, threads %d, %d steps in %.2f s (dt %.3g); active pairs %zu, list pairs %zu, "
+  std::printf("N %zu, %s%s%s, threads %d, %d steps in %.2f s (dt %.3g); active pairs %zu, list pairs %zu, "
               "contacts %zu, CG its %d\n",
-              n, integrator.c_str(), surface == "surface" ? " + surface forces" : "", omp_get_max_threads(), steps,
+              n, integrator.c_str(), surface == "surface" ? " + surface forces" : "",
+              storage == "pair_form" ? ", pair-form blocks" : "", omp_get_max_threads(), steps,
               seconds, sim.time_step(), sim.active_pairs().size(), sim.neighbours().pairs().size(),
               sim.contact_count(), sim.solver_iterations());
   std::printf("baseline RSS %ld kB, peak RSS %ld kB, (peak - baseline) / N = %.0f B per particle\n", baseline, peak,
@@ -145,14 +150,14 @@ int step(const std::string& file, int steps, const std::string& integrator, cons
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::cerr << "usage: pairwise_step_memory pack FILE [N] | step FILE [STEPS [overdamped|inertial [surface|none]]]\n";
+    std::cerr << "usage: pairwise_step_memory pack FILE [N] | step FILE [STEPS [overdamped|inertial [surface|none [dense|pair_form]]]]\n";
     return 2;
   }
   const std::string mode = argv[1], file = argv[2];
   if (mode == "pack") return pack(file, argc > 3 ? std::stoul(argv[3]) : 65536);
   if (mode == "step")
     return step(file, argc > 3 ? std::stoi(argv[3]) : 5, argc > 4 ? argv[4] : "overdamped",
-                argc > 5 ? argv[5] : "surface");
+                argc > 5 ? argv[5] : "surface", argc > 6 ? argv[6] : "dense");
   std::cerr << "unknown mode " << mode << "\n";
   return 2;
 }

@@ -144,7 +144,7 @@ class Simulation {
   int iterations_ = 0;
   double residual_ = 0.0;
   std::vector<double> speeds_;                // scratch of nonaffine_bounding_speed
-  mutable std::vector<double> pair_rates_;    // scratch of pair_rate
+  mutable KthLargest pair_rates_;             // pair_rate's ranking
   std::vector<Vec3> nonaffine_;
   StressTensors stress_;
   double dt_ = 0.0;

@@ -9,11 +9,18 @@
 
 namespace suspend {
 
-void SymmetricBlockMatrix::set_structure(std::size_t n, const std::vector<BlockLink>& links) {
+void SymmetricBlockMatrix::set_structure(std::size_t n, const std::vector<BlockLink>& links,
+                                         CouplingStorage storage) {
   scaled_ = false;
+  storage_ = storage;
   links_ = links;
   diagonal_.resize(n);
-  resize_with_headroom(coupling_, links.size());
+  if (storage == CouplingStorage::dense) {
+    resize_with_headroom(coupling_, links.size());
+  } else {
+    resize_with_headroom(pair_form_, links.size());
+    resize_with_headroom(slip_of_, links.size());
+  }
   // Counting sort of the link ends by row: row r lists its links in link order.
   row_start_.assign(n + 1, 0);
   for (const BlockLink& l : links) {
@@ -57,6 +64,16 @@ bool SymmetricBlockMatrix::factor_diagonal() {
     diagonal_[r].triangularView<Eigen::StrictlyUpper>().setZero();  // the dense products below rely on it
   }
   if (!spd) return false;
+  if (storage_ == CouplingStorage::pair_form) {  // G_i = L_i^-1 in place of L_i; the blocks stay plain
+#pragma omp parallel for schedule(static) if (n > 512)
+    for (std::ptrdiff_t r = 0; r < n; ++r) {
+      Matrix6 g = Matrix6::Identity();
+      solve_lower(diagonal_[r], g);
+      diagonal_[r] = g;
+    }
+    scaled_ = true;
+    return true;
+  }
   const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(links_.size());
 #pragma omp parallel for schedule(static) if (nl > 512)
   for (std::ptrdiff_t k = 0; k < nl; ++k) {  // L_i^-1 C L_j^-T: (L_j^-1 (L_i^-1 C)^T)^T
@@ -69,6 +86,7 @@ bool SymmetricBlockMatrix::factor_diagonal() {
 }
 
 Vector6 SymmetricBlockMatrix::coupling_transpose_times(std::size_t k, const Vector6& v) const {
+  if (storage_ == CouplingStorage::pair_form) return transpose_times(pair_form_[k], slip(k), v);
   if (!scaled_) return coupling_[k].transpose() * v;
   const Matrix6& l_i = diagonal_[links_[k].i];
   const Matrix6& l_j = diagonal_[links_[k].j];
@@ -79,6 +97,21 @@ Vector6 SymmetricBlockMatrix::coupling_transpose_times(std::size_t k, const Vect
 void SymmetricBlockMatrix::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(diagonal_.size());
   y.resize(x.size());
+  if (storage_ == CouplingStorage::pair_form) {  // D_r x_r = G_r^-1 G_r^-T x_r once scaled
+#pragma omp parallel for schedule(static) if (n > 512)
+    for (std::ptrdiff_t r = 0; r < n; ++r) {
+      Vector6 acc = x.segment<6>(6 * r);
+      if (scaled_) {
+        solve_lower_transpose(diagonal_[r], acc);
+        solve_lower(diagonal_[r], acc);
+      } else {
+        acc = diagonal_[r] * acc;
+      }
+      for (const RowEntry* e = row_begin(r); e != row_end(r); ++e) acc += pair_form_times(*e, x);
+      y.segment<6>(6 * r) = acc;
+    }
+    return;
+  }
   if (!scaled_) {
 #pragma omp parallel for schedule(static) if (n > 512)
     for (std::ptrdiff_t r = 0; r < n; ++r) {
@@ -105,6 +138,18 @@ void SymmetricBlockMatrix::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y
 Eigen::MatrixXd SymmetricBlockMatrix::dense() const {
   const std::size_t n = diagonal_.size();
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(6 * n, 6 * n);
+  if (storage_ == CouplingStorage::pair_form) {
+    for (std::size_t r = 0; r < n; ++r) {
+      const Matrix6 l = scaled_ ? Matrix6(diagonal_[r].inverse()) : Matrix6::Zero();
+      a.block<6, 6>(6 * r, 6 * r) = scaled_ ? Matrix6(l * l.transpose()) : diagonal_[r];
+    }
+    for (std::size_t k = 0; k < links_.size(); ++k) {
+      const Matrix6 c = expand(pair_form_[k], slip(k));
+      a.block<6, 6>(6 * links_[k].i, 6 * links_[k].j) += c;
+      a.block<6, 6>(6 * links_[k].j, 6 * links_[k].i) += c.transpose();
+    }
+    return a;
+  }
   for (std::size_t r = 0; r < n; ++r)
     a.block<6, 6>(6 * r, 6 * r) = scaled_ ? Matrix6(diagonal_[r] * diagonal_[r].transpose()) : diagonal_[r];
   for (std::size_t k = 0; k < links_.size(); ++k) {

@@ -7,6 +7,11 @@
 // diagonal() holds L_i. Products with A (multiply, coupling_transpose_times, dense) stay available from A' and L,
 // A = S^-1 A' S^-T, so the scaled form replaces the plain one instead of being stored beside it (288 B a link).
 //
+// Storage (set_structure): dense 6x6 coupling blocks (the default), or CouplingStorage::pair_form, each block as a
+// PairFormBlock (pair_form_block.hpp: n and 6 numbers, 72 B instead of 288 B; with a SlipForm for the links whose
+// contact slides), for the largest systems. A pair-form block cannot be scaled in place, so the scaled form keeps
+// the plain blocks C and holds G_i = L_i^-1 in diagonal(): A'_ij v = G_i C_ij G_j^T v.
+//
 // Layout: the coupling blocks are contiguous in link order; each block row lists its links sorted by column (ties
 // in link order), so the layout depends only on the link list, and the entries left of the diagonal (the strictly
 // lower part L of A = L + D + L^T) come first. y = A x is a gather over block rows: threads write disjoint
@@ -17,10 +22,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "linalg/pair_form_block.hpp"
+
 namespace suspend {
 
-using Matrix6 = Eigen::Matrix<double, 6, 6>;
-using Vector6 = Eigen::Matrix<double, 6, 1>;
+enum class CouplingStorage { dense, pair_form };
 
 // X <- L^-1 X for a lower-triangular 6x6 L and X with 6 rows (forward substitution; fixed sizes, which Eigen's
 // general triangular solvers do not specialise).
@@ -54,13 +60,16 @@ class SymmetricBlockMatrix {
     bool transposed;       // true when this row is the link's j: the block (j, i) = coupling(link)^T
   };
 
-  // n block rows; coupling blocks for these links. Values are left unset: fill diagonal() and coupling(). The
-  // matrix is then plain (not scaled).
-  void set_structure(std::size_t n, const std::vector<BlockLink>& links);
+  // n block rows; coupling blocks for these links. Values are left unset: fill diagonal() and coupling() (dense) or
+  // pair_form() and slip_of() (pair form: slip_of()[k] is -1 or link k's entry in slips(), sized by the caller).
+  // The matrix is then plain (not scaled).
+  void set_structure(std::size_t n, const std::vector<BlockLink>& links,
+                     CouplingStorage storage = CouplingStorage::dense);
   // Replaces A by its scaled form (see above; nothing to do if it is already). Returns false, leaving the matrix
   // unusable, if a diagonal block is not positive definite.
   bool factor_diagonal();
   bool scaled() const { return scaled_; }
+  CouplingStorage storage() const { return storage_; }
 
   std::size_t block_rows() const { return diagonal_.size(); }
   std::size_t size() const { return 6 * diagonal_.size(); }
@@ -71,6 +80,18 @@ class SymmetricBlockMatrix {
   const std::vector<Matrix6>& diagonal() const { return diagonal_; }
   std::vector<Matrix6>& coupling() { return coupling_; }
   const std::vector<Matrix6>& coupling() const { return coupling_; }
+  std::vector<PairFormBlock>& pair_form() { return pair_form_; }
+  const std::vector<PairFormBlock>& pair_form() const { return pair_form_; }
+  std::vector<std::int32_t>& slip_of() { return slip_of_; }
+  const std::vector<std::int32_t>& slip_of() const { return slip_of_; }
+  std::vector<SlipForm>& slips() { return slips_; }
+  const SlipForm* slip(std::size_t k) const { return slip_of_[k] < 0 ? nullptr : &slips_[slip_of_[k]]; }
+  // Pair form: the plain block of an entry times x's column.
+  Vector6 pair_form_times(const RowEntry& e, const Eigen::VectorXd& x) const {
+    const auto xc = x.segment<6>(6 * static_cast<Eigen::Index>(e.column));
+    return e.transposed ? transpose_times(pair_form_[e.link], slip(e.link), xc)
+                        : times(pair_form_[e.link], slip(e.link), xc);
+  }
 
   // Entries of block row r, by column; [row_begin, row_diagonal) are left of the diagonal, the rest right of it.
   const RowEntry* row_begin(std::size_t r) const { return entries_.data() + row_start_[r]; }
@@ -92,6 +113,10 @@ class SymmetricBlockMatrix {
  private:
   std::vector<BlockLink> links_;
   std::vector<Matrix6> diagonal_, coupling_;
+  std::vector<PairFormBlock> pair_form_;
+  std::vector<std::int32_t> slip_of_;
+  std::vector<SlipForm> slips_;
+  CouplingStorage storage_ = CouplingStorage::dense;
   std::vector<std::uint32_t> row_start_, row_split_;
   std::vector<RowEntry> entries_;
   bool scaled_ = false;

@@ -38,6 +38,19 @@ void PreconditionedConjugateGradient::prepare(SymmetricBlockMatrix& a) {
 void PreconditionedConjugateGradient::multiply(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v,
                                                Eigen::VectorXd& y) const {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.block_rows());
+  if (a.storage() == CouplingStorage::pair_form) {  // y_i = v_i + G_i sum_j C_ij (G_j^T v_j)
+    hat_.resize(v.size());
+#pragma omp parallel for schedule(static) if (6 * n > parallel_threshold)
+    for (std::ptrdiff_t i = 0; i < n; ++i)
+      hat_.segment<6>(6 * i).noalias() = a.diagonal()[i].transpose() * v.segment<6>(6 * i);
+#pragma omp parallel for schedule(static) if (6 * n > parallel_threshold)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      Vector6 acc = Vector6::Zero();
+      for (const Entry* e = a.row_begin(i); e != a.row_end(i); ++e) acc += a.pair_form_times(*e, hat_);
+      y.segment<6>(6 * i) = v.segment<6>(6 * i) + a.diagonal()[i] * acc;
+    }
+    return;
+  }
 #pragma omp parallel for schedule(static) if (6 * n > parallel_threshold)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     Vector6 s = v.segment<6>(6 * i);
@@ -51,6 +64,17 @@ void PreconditionedConjugateGradient::multiply(const SymmetricBlockMatrix& a, co
 void PreconditionedConjugateGradient::forward(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v,
                                               Eigen::VectorXd& y) const {
   const std::size_t n = a.block_rows();
+  if (a.storage() == CouplingStorage::pair_form) {  // y_i = v_i - G_i sum_{j<i} C_ij hat_j, hat_i = G_i^T y_i
+    hat_.resize(v.size());
+    for (std::size_t i = 0; i < n; ++i) {
+      Vector6 acc = Vector6::Zero();
+      for (const Entry* e = a.row_begin(i); e != a.row_diagonal(i); ++e) acc += a.pair_form_times(*e, hat_);
+      const Vector6 s = v.segment<6>(6 * i) - a.diagonal()[i] * acc;
+      y.segment<6>(6 * i) = s;
+      hat_.segment<6>(6 * i).noalias() = a.diagonal()[i].transpose() * s;
+    }
+    return;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     Vector6 s = v.segment<6>(6 * i);
     for (const Entry* e = a.row_begin(i); e != a.row_diagonal(i); ++e) subtract(*e, a.coupling(), y, s);
@@ -61,6 +85,17 @@ void PreconditionedConjugateGradient::forward(const SymmetricBlockMatrix& a, con
 // y_i = v_i - sum_{j>i} A'_ij y_j, i descending.
 void PreconditionedConjugateGradient::backward(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v,
                                                Eigen::VectorXd& y) const {
+  if (a.storage() == CouplingStorage::pair_form) {
+    hat_.resize(v.size());
+    for (std::size_t i = a.block_rows(); i-- > 0;) {
+      Vector6 acc = Vector6::Zero();
+      for (const Entry* e = a.row_diagonal(i); e != a.row_end(i); ++e) acc += a.pair_form_times(*e, hat_);
+      const Vector6 s = v.segment<6>(6 * i) - a.diagonal()[i] * acc;
+      y.segment<6>(6 * i) = s;
+      hat_.segment<6>(6 * i).noalias() = a.diagonal()[i].transpose() * s;
+    }
+    return;
+  }
   for (std::size_t i = a.block_rows(); i-- > 0;) {
     Vector6 s = v.segment<6>(6 * i);
     for (const Entry* e = a.row_diagonal(i); e != a.row_end(i); ++e) subtract(*e, a.coupling(), y, s);
@@ -70,11 +105,15 @@ void PreconditionedConjugateGradient::backward(const SymmetricBlockMatrix& a, co
 
 void PreconditionedConjugateGradient::scale(const SymmetricBlockMatrix& a, const Eigen::VectorXd& r,
                                             Eigen::VectorXd& y) {
+  if (a.storage() == CouplingStorage::pair_form)  // the diagonal holds G_i = L_i^-1
+    return for_each_block(a, r, y, [](const Matrix6& g, auto&& v) { v = g * Vector6(v); });
   for_each_block(a, r, y, [](const Matrix6& l, auto&& v) { solve_lower(l, v); });
 }
 
 void PreconditionedConjugateGradient::unscale(const SymmetricBlockMatrix& a, const Eigen::VectorXd& u,
                                               Eigen::VectorXd& y) {
+  if (a.storage() == CouplingStorage::pair_form)
+    return for_each_block(a, u, y, [](const Matrix6& g, auto&& v) { v = g.transpose() * Vector6(v); });
   for_each_block(a, u, y, [](const Matrix6& l, auto&& v) { solve_lower_transpose(l, v); });
 }
 
@@ -98,7 +137,9 @@ ConjugateGradientReport PreconditionedConjugateGradient::solve(const SymmetricBl
                                                                Preconditioner kind) {
   if (!a.scaled()) throw InputError("conjugate gradient: the matrix was not prepared (scaled) for it");
   const std::ptrdiff_t size = b.size();
-  for (Eigen::VectorXd* v : {&r_, &rho_, &u_, &p_, &q_, &t_, &w_, &candidate_}) v->resize(size);
+  // r is the true residual of the guess, used only before the iterations; its storage then holds the candidates.
+  Eigen::VectorXd& r = candidate_;
+  for (Eigen::VectorXd* v : {&rho_, &u_, &p_, &q_, &t_, &w_, &candidate_}) v->resize(size);
   if (x.size() != size) x = Eigen::VectorXd::Zero(size);
   ConjugateGradientReport report;
   report.converged = true;
@@ -110,18 +151,18 @@ ConjugateGradientReport PreconditionedConjugateGradient::solve(const SymmetricBl
   const bool ssor = kind == Preconditioner::symmetric_gauss_seidel;
   // True residual of the guess; a guess worse than zero (e.g. after a jump in the forcing) is dropped.
   a.multiply(x, q_);
-  r_ = b - q_;
-  double true_norm = std::sqrt(dot(r_, r_));
+  r = b - q_;
+  double true_norm = std::sqrt(dot(r, r));
   if (true_norm > b_norm) {
     x.setZero();
-    r_ = b;
+    r = b;
     true_norm = b_norm;
   }
   report.residual = true_norm / b_norm;
   if (true_norm <= tolerance * b_norm) return report;
 
   // Correction d = S^T u (Jacobi) or S^T K'^-T u (Gauss-Seidel); CG residual rho = S r or K'^-1 S r.
-  scale(a, r_, ssor ? w_ : rho_);
+  scale(a, r, ssor ? w_ : rho_);
   if (ssor) forward(a, w_, rho_);
   u_.setZero();
   p_ = rho_;

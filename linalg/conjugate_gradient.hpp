@@ -49,7 +49,8 @@ class PreconditionedConjugateGradient {
   static void unscale(const SymmetricBlockMatrix& a, const Eigen::VectorXd& u, Eigen::VectorXd& y);  // y = S^T u
   double dot(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
 
-  Eigen::VectorXd r_, rho_, u_, p_, q_, t_, w_, candidate_;
+  Eigen::VectorXd rho_, u_, p_, q_, t_, w_, candidate_;
+  mutable Eigen::VectorXd hat_;  // pair-form sweeps: G_j^T y_j of the rows done
   std::vector<double> chunk_sums_;
 };
 

@@ -11,9 +11,9 @@ namespace suspend {
 
 double pair_motion_rate(const std::vector<ActivePair>& pairs, const Particles& p, double image_velocity,
                         const std::vector<ContactRecord>& records, const PairMotionLimits& limits, std::size_t rank,
-                        std::vector<double>* scratch) {
-  const bool ranked = rank > 1 && scratch != nullptr;
-  if (ranked) scratch->resize(pairs.size());
+                        KthLargest* ranking) {
+  const bool ranked = rank > 1 && ranking != nullptr;
+  if (ranked) ranking->reset(rank);
   double rate = 0.0;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const ActivePair& pr = pairs[k];
@@ -31,11 +31,11 @@ double pair_motion_rate(const std::vector<ActivePair>& pairs, const Particles& p
       pair_rate = normal / (limits.contact_displacement + limits.gap_change * distance);
     }
     if (ranked)
-      (*scratch)[k] = pair_rate;
+      ranking->add(pair_rate);
     else
       rate = std::max(rate, pair_rate);
   }
-  return ranked ? kth_largest(*scratch, rank) : rate;
+  return ranked ? ranking->value() : rate;
 }
 
 }  // namespace suspend

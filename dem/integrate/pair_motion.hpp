@@ -21,6 +21,8 @@
 
 namespace suspend {
 
+class KthLargest;  // time_step_control.hpp
+
 struct PairMotionLimits {
   double contact_displacement;  // a contact's normal displacement per step (a_1), > 0
   double slip;                  // a contact's tangential slip per step (a_1), > 0
@@ -31,9 +33,9 @@ struct PairMotionLimits {
 // The rank-th largest over pairs (the largest for rank 1) of (relative speed / allowed displacement): the step must
 // be at most its inverse (0: no pair moves). image_velocity: the Lees-Edwards velocity of the image of j per y image
 // (gammadot L_y); records: the contact stage's per-pair records (which pairs are in contact), same order as pairs;
-// scratch: the per-pair rates when rank > 1 (time_step_control.hpp, bound_rank).
+// ranking: kept by the caller for rank > 1 (time_step_control.hpp, bound_rank).
 double pair_motion_rate(const std::vector<ActivePair>& pairs, const Particles& p, double image_velocity,
                         const std::vector<ContactRecord>& records, const PairMotionLimits& limits,
-                        std::size_t rank = 1, std::vector<double>* scratch = nullptr);
+                        std::size_t rank = 1, KthLargest* ranking = nullptr);
 
 }  // namespace suspend

@@ -25,6 +25,8 @@ void ResistanceSolverParams::validate() const {
     throw InputError("hydrodynamics.solver.tolerance = " + std::to_string(tolerance) + " must be in (0, 1)");
   if (max_iterations < 1)
     throw InputError("hydrodynamics.solver.max_iterations = " + std::to_string(max_iterations) + " must be >= 1");
+  if (storage == CouplingStorage::pair_form && solver != LinearSolver::conjugate_gradient)
+    throw InputError("hydrodynamics.solver.storage = pair_form needs hydrodynamics.solver.method = cg");
   lubrication.validate();
 }
 
@@ -80,9 +82,23 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
     links_[l] = {row_of_[pr.i], row_of_[pr.j]};
     link_pair_[l] = static_cast<std::uint32_t>(k);
   }
-  matrix_.set_structure(n, links_);
+  const bool compact = params_.storage == CouplingStorage::pair_form;
+  matrix_.set_structure(n, links_, params_.storage);
   const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(links_.size());
-  resize_with_headroom(on_j_, nl);
+  if (compact) {
+    // Sliding contacts' links get a slip entry (the only blocks with terms along the slip direction).
+    resize_with_headroom(compact_on_j_, nl);
+    std::int32_t slips = 0;
+    for (std::ptrdiff_t l = 0; l < nl; ++l) {
+      const std::size_t k = link_pair_[l];
+      const bool slides = stiff(implicit, k) && (*implicit.stiffness)[k].slip_direction.squaredNorm() > 0.0;
+      matrix_.slip_of()[l] = slides ? slips++ : -1;
+    }
+    matrix_.slips().resize(static_cast<std::size_t>(slips));
+    slip_on_j_.resize(static_cast<std::size_t>(slips));
+  } else {
+    resize_with_headroom(on_j_, nl);
+  }
 
   // Block rows: Stokes drag; right-hand side F_nh + Faxen.
   rhs_.resize(6 * static_cast<Eigen::Index>(n));
@@ -125,8 +141,25 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
       out.self_i.pack(r.block<6, 6>(0, 0));
       out.self_j.pack(r.block<6, 6>(6, 6));
       out.strain = strain;
-      matrix_.coupling()[l] = r.block<6, 6>(0, 6);
-      on_j_[l] = {r.block<3, 6>(6, 6), strain.segment<3>(6)};
+      if (compact) {
+        const std::int32_t s = matrix_.slip_of()[l];
+        const Vec3 t = s < 0 ? Vec3::Zero() : Vec3((*implicit.stiffness)[k].slip_direction);
+        SlipForm slip, self_slip;
+        PairFormBlock self;
+        if (!compress(r.block<6, 6>(0, 6), pr.geometry.n, t, matrix_.pair_form()[l], slip) ||
+            !compress(r.block<6, 6>(6, 6), pr.geometry.n, t, self, self_slip))
+          throw NumericalError("resistance solver: the block of pair (" + std::to_string(pr.i) + ", " +
+                               std::to_string(pr.j) + ") is not of the pair form (hydrodynamics.solver.storage = "
+                               "pair_form); use storage: dense");
+        if (s >= 0) {
+          matrix_.slips()[s] = slip;
+          slip_on_j_[s] = {self_slip.a, self_slip.b};
+        }
+        compact_on_j_[l] = {self.a_n, self.a_t, self.b, strain.segment<3>(6)};
+      } else {
+        matrix_.coupling()[l] = r.block<6, 6>(0, 6);
+        on_j_[l] = {r.block<3, 6>(6, 6), strain.segment<3>(6)};
+      }
     }
     for (std::ptrdiff_t c = 0; c < count; ++c) {
       const BlockLink& link = links_[start + c];
@@ -292,12 +325,25 @@ double ResistanceSolver::relaxation_rate(const std::vector<double>& mass, const 
     const std::size_t r = row_of_[i];
     Vector6 row = matrix_.diagonal()[r].cwiseAbs().rowwise().sum();
     for (const auto* e = matrix_.row_begin(r); e != matrix_.row_end(r); ++e) {
-      const Matrix6& c = matrix_.coupling()[e->link];
+      const Matrix6 c = matrix_.storage() == CouplingStorage::pair_form
+                            ? expand(matrix_.pair_form()[e->link], matrix_.slip(e->link))
+                            : matrix_.coupling()[e->link];
       row += e->transposed ? Vector6(c.transpose().cwiseAbs().rowwise().sum()) : Vector6(c.cwiseAbs().rowwise().sum());
     }
     rate = std::max({rate, row.head<3>().maxCoeff() / mass[i], row.tail<3>().maxCoeff() / moment[i]});
   }
   return rate;
+}
+
+Vec3 ResistanceSolver::self_force(std::size_t l, const Vec3& n, const Vector6& dv_j) const {
+  const PairFormForceOnJ& f = compact_on_j_[l];
+  const Vec3 u = dv_j.head<3>(), w = dv_j.tail<3>();
+  Vec3 out = f.a_t * u + ((f.a_n - f.a_t) * n.dot(u)) * n + f.b * n.cross(w);
+  if (const SlipForm* s = matrix_.slip(l)) {
+    const SlipOnJ& sj = slip_on_j_[matrix_.slip_of()[l]];
+    out += (sj.a * s->t.dot(u) + sj.b * n.cross(s->t).dot(w)) * s->t;
+  }
+  return out;
 }
 
 void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<int>& species,
@@ -325,8 +371,10 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
     const Vector6 dv_i = x.segment<6>(6 * static_cast<Eigen::Index>(pr.i));
     const Vector6 dv_j = x.segment<6>(6 * static_cast<Eigen::Index>(pr.j));
     // The blocks hold lubrication + implicit contact terms; the contact change is taken out of the force on j.
-    Vec3 f_j = -(matrix_.coupling_transpose_times(l, dv_i).head<3>() + on_j_[l].self_force_rows * dv_j);
-    if (strain_driven) f_j += on_j_[l].strain_force;
+    const bool compact = params_.storage == CouplingStorage::pair_form;
+    Vec3 f_j = -(matrix_.coupling_transpose_times(l, dv_i).head<3>() +
+                 (compact ? self_force(l, pr.geometry.n, dv_j) : Vec3(on_j_[l].self_force_rows * dv_j)));
+    if (strain_driven) f_j += compact ? compact_on_j_[l].strain_force : on_j_[l].strain_force;
     out.lubrication_force_on_j[k] = f_j;
     if (stiff(implicit, k)) {
       hydro::Vector12 dv;

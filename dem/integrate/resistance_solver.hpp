@@ -29,7 +29,8 @@
 // Memory per link: the coupling block (in the matrix, in the conjugate gradient's scaled form), and the force rows
 // of j's self block and j's strain force (21 values, for the stress); the self blocks and strain forces are added to
 // their rows a chunk of links at a time. The force-dipole stress is summed from the pair forces without a per-pair
-// tensor.
+// tensor. With storage pair_form (ResistanceSolverParams::storage) a link keeps n and 6 numbers of its coupling
+// block and 3 of j's force rows instead (linalg/pair_form_block.hpp).
 #pragma once
 #include <array>
 #include <cstddef>
@@ -62,6 +63,10 @@ struct ResistanceSolverParams {
   double tolerance = 1e-6;
   int max_iterations = 5000;  // CG iterations before NumericalError
   bool warm_start = true;     // start CG from the previous solution
+  // Coupling blocks of the conjugate gradient: dense 6x6 (default), or pair_form (linalg/pair_form_block.hpp:
+  // n and 6 numbers a link, and the stress's force rows of j as 3 numbers and its strain force), which needs about
+  // 1 KB less per particle at phi = 0.5, for the largest systems. The same solution to the solver's tolerance.
+  CouplingStorage storage = CouplingStorage::dense;
   LubricationStress lubrication_stress = LubricationStress::force_dipole;
   hydro::LubricationParams lubrication;
   // Throws InputError naming the key (hydrodynamics.solver.*, lubrication.*).
@@ -202,6 +207,17 @@ class ResistanceSolver {
     Eigen::Matrix<double, 3, 6> self_force_rows;
     Vec3 strain_force;
   };
+  // The same in pair form (CouplingStorage::pair_form): j's self block's force rows [A, B] as a_n, a_t, b (and, for
+  // a sliding contact, s_a and s_b in slip_on_j_, by the matrix's slip_of()).
+  struct PairFormForceOnJ {
+    double a_n, a_t, b;
+    Vec3 strain_force;
+  };
+  struct SlipOnJ {
+    double a, b;
+  };
+  // -F_j's self part, (A u + B w) of j's block for dV_j = (u, w), of link l.
+  Vec3 self_force(std::size_t l, const Vec3& n, const Vector6& dv_j) const;
   // A link's contributions to its two rows, for a chunk of links at a time (assemble()).
   struct ChunkLink {
     PackedSymmetric6 self_i, self_j;
@@ -211,6 +227,8 @@ class ResistanceSolver {
   std::vector<BlockLink> links_;
   std::vector<std::uint32_t> link_pair_;
   std::vector<ForceOnJ> on_j_;
+  std::vector<PairFormForceOnJ> compact_on_j_;
+  std::vector<SlipOnJ> slip_on_j_;
   std::vector<ChunkLink> chunk_;
   std::vector<std::int32_t> pair_link_;  // per pair: its link, or -1 (beyond the outer cutoff, CG)
   std::size_t lubricated_ = 0;

@@ -81,6 +81,31 @@ inline double kth_largest(std::vector<double>& values, std::size_t k) {
   return *kth;
 }
 
+// The k-th largest of a stream of values (kth_largest without the values: the k largest seen, in a min-heap), so
+// that ranking the pairs costs k numbers instead of one per pair. Fewer than k values: the smallest; none: 0.
+class KthLargest {
+ public:
+  void reset(std::size_t k) {
+    k_ = std::max<std::size_t>(k, 1);
+    heap_.clear();
+  }
+  void add(double v) {
+    if (heap_.size() < k_) {
+      heap_.push_back(v);
+      std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+    } else if (v > heap_.front()) {
+      std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+      heap_.back() = v;
+      std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+    }
+  }
+  double value() const { return heap_.empty() ? 0.0 : heap_.front(); }
+
+ private:
+  std::size_t k_ = 1;
+  std::vector<double> heap_;
+};
+
 // The speed the displacement bound applies to (see above): the k-th largest of the particles' `speeds`, k =
 // bound_rank. Reorders `speeds`.
 inline double bounding_speed(std::vector<double>& speeds, int fastest_of) {

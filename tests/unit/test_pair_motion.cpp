@@ -73,7 +73,7 @@ TEST(PairMotion, RankTwoIsTheSecondFastestPair) {
   const std::vector<ActivePair> pairs{pair(0, 1), pair(2, 3), pair(4, 5)};
   std::vector<ContactRecord> records(3);
   records[0].contact = records[2].contact = true;
-  std::vector<double> scratch;
+  KthLargest scratch;
   EXPECT_DOUBLE_EQ(pair_motion_rate(pairs, p, 0.0, records, limits), 0.6 / 2e-3);
   EXPECT_DOUBLE_EQ(pair_motion_rate(pairs, p, 0.0, records, limits, 1, &scratch), 0.6 / 2e-3);
   EXPECT_DOUBLE_EQ(pair_motion_rate(pairs, p, 0.0, records, limits, 2, &scratch), 0.1 / 5e-4);
@@ -138,4 +138,24 @@ TEST(BoundingSpeed, DoesNotGrowWithTheNumberOfParticles) {
   EXPECT_EQ(max_500, rule_500);            // below 1000 particles: the fastest of all, as before
   EXPECT_GT(max_8000 / max_500, 1.15);     // Maxwell tail: 4.58 / 3.98 expected
   EXPECT_NEAR(rule_8000 / rule_500, 1.0, 0.04);
+}
+
+TEST(KthLargest, IsTheKthLargestOfTheStream) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> values(1000);
+  for (double& v : values) v = u(rng);
+  std::vector<double> sorted = values;
+  std::sort(sorted.begin(), sorted.end(), std::greater<>());
+  for (const std::size_t k : {1u, 2u, 7u, 1000u, 1500u}) {
+    KthLargest ranking;
+    ranking.reset(k);
+    for (double v : values) ranking.add(v);
+    EXPECT_EQ(ranking.value(), sorted[std::min<std::size_t>(k, sorted.size()) - 1]) << k;
+    std::vector<double> copy = values;
+    EXPECT_EQ(ranking.value(), kth_largest(copy, k)) << k;
+  }
+  KthLargest none;
+  none.reset(3);
+  EXPECT_EQ(none.value(), 0.0);
 }
