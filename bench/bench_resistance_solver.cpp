@@ -71,7 +71,7 @@ const Configuration& configuration(std::size_t n) {
   for (std::size_t i = 0; i < p.size(); ++i) c.current.p.position[i] += dt * out.velocity[i];
   for (ActivePair& pr : c.current.pairs) {
     const Vec3 d = c.box.minimum_image(c.current.p.position[pr.i], c.current.p.position[pr.j]).d;
-    pr.geometry = PairGeometry::from(d, pr.geometry.a_i, pr.geometry.a_j);
+    pr.set_geometry(PairGeometry::from(d, pr.a_i, pr.a_j));
   }
   return c;
 }

@@ -99,7 +99,7 @@ void FcmModel::respond(const coupling::CoupledResult& r, const std::vector<Activ
   out.stress[Contribution::lubrication] = r.subgrid_stress;
   out.contact_change_on_j = r.contact_change_on_j;
   for (std::size_t k = 0; k < r.contact_change_on_j.size(); ++k)
-    add_contact_change_virial(pairs[k].geometry, r.contact_change_on_j[k], out.stress);
+    add_contact_change_virial(pairs[k].geometry(), r.contact_change_on_j[k], out.stress);
   out.iterations = r.iterations;
   out.residual = r.residual;
 }

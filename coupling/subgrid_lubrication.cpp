@@ -90,7 +90,7 @@ void SubgridLubrication::assemble(const std::vector<ActivePair>& pairs, const st
   const Mat3 e_hat = AmbientFlow::simple_shear(1.0).strain_rate();
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const ActivePair& pr = pairs[k];
-    const PairGeometry& g = pr.geometry;
+    const PairGeometry& g = pr.geometry();
     const double s = 2.0 * g.r / (g.a_i + g.a_j);
     if (s >= params_.cutoff) continue;
     link_pair_.push_back(static_cast<std::uint32_t>(k));
@@ -154,7 +154,7 @@ void SubgridLubrication::add_contact_steps(const std::vector<ActivePair>& pairs,
   for (std::size_t l = 0; l < links_.size(); ++l) {
     const std::size_t k = link_pair_[l];
     if (!stiffness[k].any()) continue;
-    const ContactStep c = contact_step(pairs[k].geometry, positions[pairs[k].i], stiffness[k], dt, unit_flow);
+    const ContactStep c = contact_step(pairs[k].geometry(), positions[pairs[k].i], stiffness[k], dt, unit_flow);
     // (Its resistance is applied from `contact_` in pair_forces and resistance_matrix: delta_r_ holds the
     // lubrication blocks' coefficients only.)
     delta_strain_[l] += c.ambient_force();

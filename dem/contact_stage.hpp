@@ -32,7 +32,7 @@ class ContactStage {
   std::optional<std::string> evaluate(const Particles& p, const Box& box, double image_velocity, const ContactLaw& law,
                                       double last_dt, bool stiffness, double max_overlap);
   // After the move: the pair histories go back to the per-particle store.
-  void store_histories() { history_.scatter(active_index_, pair_history_); }
+  void store_histories() { history_.scatter(history_pairs_, pair_history_); }
   void record_motion(const std::vector<Vec3>& nonaffine, double strain_change) {
     list_.record_motion(nonaffine, strain_change);
   }
@@ -43,15 +43,17 @@ class ContactStage {
   const std::vector<ContactStiffness>& stiffness() const { return stiffness_; }
   // Force on j of each pair (same order as pairs()); the engines add the implicit contact changes.
   const std::vector<Vec3>& pair_forces() const { return pair_force_; }
-  const std::vector<ContactRecord>& records() const { return records_; }
+  ContactRecords records() const { return {records_, &history_slot_}; }
   // The implicit contact step's change of pair k's contact force on j (normal and tangential parts by the pair's
   // normal), added to its force and record.
   void add_contact_change(std::size_t k, const Vec3& change_on_j) {
     pair_force_[k] += change_on_j;
-    const Vec3& n = active_[k].geometry.n;
+    const Vec3 n = active_[k].geometry().n;
     const Vec3 normal = n.dot(change_on_j) * n;
-    records_[k].normal += normal;
-    records_[k].tangential += change_on_j - normal;
+    const std::int32_t slot = history_slot_[k];  // a pair with a contact stiffness is within the law's range
+    if (slot < 0) return;
+    records_[slot].normal += normal;
+    records_[slot].tangential += change_on_j - normal;
   }
   const VerletList& neighbours() const { return list_; }
   double range() const { return range_; }
@@ -61,11 +63,14 @@ class ContactStage {
   VerletList list_;
   ContactHistory history_;
   std::vector<ActivePair> active_;
-  std::vector<NeighbourPair> active_index_;
+  // Histories only for the pairs that can be in contact (within the contact law's range, or in contact before):
+  // each active pair's slot in pair_history_ (-1: none), and the slotted pairs' (i, j) for the store.
+  std::vector<std::int32_t> history_slot_;
+  std::vector<NeighbourPair> history_pairs_;
   std::vector<PairHistory> pair_history_;
   std::vector<Vec3> pair_force_;
   std::vector<ContactStiffness> stiffness_;
-  std::vector<ContactRecord> records_;
+  std::vector<ContactRecord> records_;  // per history slot
   PairSums sums_;
   std::vector<PairSums> scratch_;
 };

@@ -11,10 +11,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "core/box.hpp"
 #include "core/capacity.hpp"
+#include "core/error.hpp"
 #include "core/particles.hpp"
 #include "core/stress.hpp"
 #include "dem/contact/pair_geometry.hpp"
@@ -23,10 +25,27 @@
 
 namespace suspend {
 
+// A pair within the interaction range. It keeps d, r and the radii; geometry() forms n = d / r again, bit for bit
+// what PairGeometry::from gave, so that a pair costs 64 B instead of 88 B (docs/performance.md section d).
 struct ActivePair {
-  std::uint32_t i, j;
-  int y_images;  // Lees-Edwards image index of j (for velocity corrections)
-  PairGeometry geometry;
+  std::uint32_t i = 0, j = 0;
+  int y_images = 0;  // Lees-Edwards image index of j (for velocity corrections)
+  Vec3 d = Vec3::Zero();
+  double r = 0.0, a_i = 0.0, a_j = 0.0;
+  ActivePair() = default;
+  ActivePair(std::uint32_t i, std::uint32_t j, int y_images, const PairGeometry& g)
+      : i(i), j(j), y_images(y_images) {
+    set_geometry(g);
+  }
+  // A value, const so that assigning to it (a no-op) does not compile: set_geometry() changes the pair.
+  const PairGeometry geometry() const { return {d, d / r, r, a_i, a_j}; }
+  void set_geometry(const PairGeometry& g) {
+    d = g.d;
+    r = g.r;
+    a_i = g.a_i;
+    a_j = g.a_j;
+  }
+  double gap() const { return r - a_i - a_j; }
 };
 
 struct PairSums {
@@ -50,6 +69,28 @@ struct ContactRecord {
   bool contact = false, sliding = false;
 };
 
+// The records of a pair list, by pair: records[slot[k]] for pairs with a history slot (ContactStage keeps records
+// only for the pairs its contact law can touch; -1: none, no contact), or records[k] without slots.
+class ContactRecords {
+ public:
+  ContactRecords(const std::vector<ContactRecord>& records, const std::vector<std::int32_t>* slot = nullptr)
+      : records_(&records), slot_(slot) {}
+  ContactRecord operator[](std::size_t k) const {
+    if (!slot_) return (*records_)[k];
+    const std::int32_t s = (*slot_)[k];
+    return s < 0 ? ContactRecord{} : (*records_)[static_cast<std::size_t>(s)];
+  }
+  bool contact(std::size_t k) const {
+    if (!slot_) return (*records_)[k].contact;
+    const std::int32_t s = (*slot_)[k];
+    return s >= 0 && (*records_)[static_cast<std::size_t>(s)].contact;
+  }
+
+ private:
+  const std::vector<ContactRecord>* records_;
+  const std::vector<std::int32_t>* slot_;
+};
+
 // Tangent stiffnesses of a pair's contact law at this step (PairForce::normal_stiffness, tangential_stiffness,
 // slip_direction), for the linearly implicit contact step: S = normal n n + tangential (I - n n - t t), t the slip
 // direction of a sliding contact (zero while it sticks).
@@ -67,13 +108,17 @@ void compact_active_pairs(const std::vector<NeighbourPair>& list, const Particle
 // the force on j of each pair goes to pair_force[k] (snapshots). velocity/omega are the particle velocities the
 // contact laws see (the last step's); the image of j moves at u_j - y_images gammadot L_y x (Lees-Edwards).
 // `local` is per-thread scratch kept by the caller so that steps do not allocate. If `stiffness` is given, it gets
-// each pair's contact stiffnesses (same order as active).
+// each pair's contact stiffnesses (same order as active). With `history_slot`, pair k's history is
+// history[history_slot[k]] and its record records[history_slot[k]]; a pair without a slot (-1: beyond the contact
+// law's range and not in contact before) starts from a fresh history that is not kept and has no record; a law that
+// brings such a pair into contact or exerts a contact force on it is a NumericalError.
 template <class Law>
 void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particles& p, double image_velocity,
                             const Law& law, double dt, std::vector<PairHistory>& history, PairSums& sums,
                             std::vector<Vec3>& pair_force, std::vector<PairSums>& local,
                             std::vector<ContactStiffness>* stiffness = nullptr,
-                            std::vector<ContactRecord>* records = nullptr) {
+                            std::vector<ContactRecord>* records = nullptr,
+                            const std::vector<std::int32_t>* history_slot = nullptr) {
   const std::size_t n_particles = p.size();
   // Small systems stay on one thread: a parallel region costs more than their whole loop (and far more when the
   // cores are shared). The split depends only on the pair count, so results stay reproducible.
@@ -82,11 +127,12 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
   resize_with_headroom(pair_force, active.size());
   if (stiffness) stiffness->resize(active.size());
   ContactStiffness* const pair_stiffness = stiffness ? stiffness->data() : nullptr;
-  if (records) resize_with_headroom(*records, active.size());
+  if (records) resize_with_headroom(*records, history_slot ? history.size() : active.size());
   ContactRecord* const pair_record = records ? records->data() : nullptr;
   sums.force.resize(n_particles);
   sums.torque.resize(n_particles);
-#pragma omp parallel num_threads(nthreads)
+  bool beyond = false;  // a pair without a history slot came into contact (or-reduced over the threads)
+#pragma omp parallel num_threads(nthreads) reduction(|| : beyond)
   {
     const int t = omp_get_thread_num();
     PairSums& mine = local[t];
@@ -127,16 +173,22 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
     std::size_t contacts = 0, elastic = 0;
     double max_overlap = 0.0, compliance = 0.0;
     std::uint32_t max_i = 0, max_j = 0;
+    PairHistory spare;
     for (std::size_t k = begin; k < end; ++k) {
       const ActivePair& pr = active[k];
       const RelativeMotion m{p.velocity[pr.i], p.velocity[pr.j] - Vec3(pr.y_images * image_velocity, 0.0, 0.0),
                              p.angular_velocity[pr.i], p.angular_velocity[pr.j]};
-      const PairForce f = law(p.species[pr.i], p.species[pr.j], pr.geometry, m, dt, history[k]);
+      const std::int32_t slot = history_slot ? (*history_slot)[k] : static_cast<std::int32_t>(k);
+      if (slot < 0) spare = PairHistory{};
+      PairHistory& h = slot < 0 ? spare : history[static_cast<std::size_t>(slot)];
+      const PairGeometry g = pr.geometry();
+      const PairForce f = law(p.species[pr.i], p.species[pr.j], g, m, dt, h);
+      if (slot < 0 && spare.in_contact) beyond = true;
       const Vec3 fj = f.total_on_j();
       pair_force[k] = fj;
       if (pair_stiffness) pair_stiffness[k] = {f.normal_stiffness, f.tangential_stiffness, f.slip_direction};
       if (f.normal_stiffness > 0.0) {
-        compliance += std::abs(f[Contribution::contact_normal].dot(pr.geometry.n)) / f.normal_stiffness;
+        compliance += std::abs(f[Contribution::contact_normal].dot(g.n)) / f.normal_stiffness;
         ++elastic;
       }
       force[pr.j - offset] += fj;
@@ -144,14 +196,15 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
       torque[pr.i - offset] += f.torque_i;
       torque[pr.j - offset] += f.torque_j;
       for (std::size_t c = 0; c < contribution_count; ++c)
-        if (f.on_j[c].squaredNorm() > 0.0) virial.part[c] -= sym_outer(pr.geometry.d, f.on_j[c]);
+        if (f.on_j[c].squaredNorm() > 0.0) virial.part[c] -= sym_outer(pr.d, f.on_j[c]);
       // A contact: the contact law exerts a normal force (overlap for the spring laws, a gap below the roughness
       // height for Hertz + adhesion).
       const bool contact = f[Contribution::contact_normal].squaredNorm() > 0.0;
       if (contact) ++contacts;
-      if (pair_record)
-        pair_record[k] = {f[Contribution::contact_normal], f[Contribution::contact_tangential], contact, f.sliding};
-      const double overlap = -pr.geometry.gap();
+      if (pair_record && slot >= 0)
+        pair_record[slot] = {f[Contribution::contact_normal], f[Contribution::contact_tangential], contact, f.sliding};
+      if (slot < 0 && contact) beyond = true;
+      const double overlap = -pr.gap();
       if (overlap > max_overlap) {
         max_overlap = overlap;
         max_i = pr.i;
@@ -191,6 +244,9 @@ void accumulate_pair_forces(const std::vector<ActivePair>& active, const Particl
       }
     }
   }
+  if (beyond)
+    throw NumericalError("contact stage: a pair beyond the contact law's range came into contact (its history would "
+                         "be lost); the law's range() must cover every gap at which it starts a contact");
   sums.virial.clear();
   sums.max_overlap = 0.0;
   sums.contacts = 0;

@@ -116,7 +116,7 @@ class Simulation {
   const VerletList& neighbours() const { return contacts_.neighbours(); }
   // Force on j of each active pair (same order as active_pairs()), for snapshots.
   const std::vector<Vec3>& pair_forces() const { return contacts_.pair_forces(); }
-  const std::vector<ContactRecord>& contact_records() const { return contacts_.records(); }
+  ContactRecords contact_records() const { return contacts_.records(); }
   // Wall-clock seconds of the contact stage since construction.
   double contact_seconds() const { return contact_seconds_; }
 

@@ -27,17 +27,18 @@ Snapshot snapshot_of(const Simulation& sim) {
   s.particles = &st.particles;
   const std::vector<Vec3>& f = sim.pair_forces();
   const auto& pairs = sim.active_pairs();
-  const std::vector<ContactRecord>& records = sim.contact_records();
+  const ContactRecords records = sim.contact_records();
   for (std::size_t k = 0; k < pairs.size(); ++k) {
-    if (!records[k].contact) continue;  // lubrication-range pairs without contact force are not contacts
-    const PairGeometry& g = pairs[k].geometry;
+    const ContactRecord r = records[k];
+    if (!r.contact) continue;  // lubrication-range pairs without contact force are not contacts
+    const PairGeometry& g = pairs[k].geometry();
     s.contact_pairs.push_back(pairs[k].i);
     s.contact_pairs.push_back(pairs[k].j);
     for (int a = 0; a < 3; ++a) s.contact_force.push_back(f[k][a]);
     s.contact_gap.push_back(g.gap());
-    s.contact_normal_force.push_back(records[k].normal.dot(g.n));
-    for (int a = 0; a < 3; ++a) s.contact_tangential_force.push_back(records[k].tangential[a]);
-    s.contact_sliding.push_back(records[k].sliding ? 1 : 0);
+    s.contact_normal_force.push_back(r.normal.dot(g.n));
+    for (int a = 0; a < 3; ++a) s.contact_tangential_force.push_back(r.tangential[a]);
+    s.contact_sliding.push_back(r.sliding ? 1 : 0);
   }
   return s;
 }

@@ -11,9 +11,14 @@ namespace suspend {
 
 void SymmetricBlockMatrix::set_structure(std::size_t n, const std::vector<BlockLink>& links,
                                          CouplingStorage storage) {
+  links_ = links;
+  set_structure(n, storage);
+}
+
+void SymmetricBlockMatrix::set_structure(std::size_t n, CouplingStorage storage) {
+  const std::vector<BlockLink>& links = links_;
   scaled_ = false;
   storage_ = storage;
-  links_ = links;
   diagonal_.resize(n);
   if (storage == CouplingStorage::dense) {
     resize_with_headroom(coupling_, links.size());

@@ -65,6 +65,9 @@ class SymmetricBlockMatrix {
   // The matrix is then plain (not scaled).
   void set_structure(std::size_t n, const std::vector<BlockLink>& links,
                      CouplingStorage storage = CouplingStorage::dense);
+  // The same for the links written into links_to_set() (no second copy of the link list).
+  std::vector<BlockLink>& links_to_set() { return links_; }
+  void set_structure(std::size_t n, CouplingStorage storage);
   // Replaces A by its scaled form (see above; nothing to do if it is already). Returns false, leaving the matrix
   // unusable, if a diagonal block is not positive definite.
   bool factor_diagonal();

@@ -36,17 +36,17 @@ void PreconditionedConjugateGradient::prepare(SymmetricBlockMatrix& a) {
 }
 
 void PreconditionedConjugateGradient::multiply(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v,
-                                               Eigen::VectorXd& y) const {
+                                               Eigen::VectorXd& y, Eigen::VectorXd& hat) const {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.block_rows());
   if (a.storage() == CouplingStorage::pair_form) {  // y_i = v_i + G_i sum_j C_ij (G_j^T v_j)
-    hat_.resize(v.size());
+    hat.resize(v.size());
 #pragma omp parallel for schedule(static) if (6 * n > parallel_threshold)
     for (std::ptrdiff_t i = 0; i < n; ++i)
-      hat_.segment<6>(6 * i).noalias() = a.diagonal()[i].transpose() * v.segment<6>(6 * i);
+      hat.segment<6>(6 * i).noalias() = a.diagonal()[i].transpose() * v.segment<6>(6 * i);
 #pragma omp parallel for schedule(static) if (6 * n > parallel_threshold)
     for (std::ptrdiff_t i = 0; i < n; ++i) {
       Vector6 acc = Vector6::Zero();
-      for (const Entry* e = a.row_begin(i); e != a.row_end(i); ++e) acc += a.pair_form_times(*e, hat_);
+      for (const Entry* e = a.row_begin(i); e != a.row_end(i); ++e) acc += a.pair_form_times(*e, hat);
       y.segment<6>(6 * i) = v.segment<6>(6 * i) + a.diagonal()[i] * acc;
     }
     return;
@@ -62,16 +62,16 @@ void PreconditionedConjugateGradient::multiply(const SymmetricBlockMatrix& a, co
 
 // y_i = v_i - sum_{j<i} A'_ij y_j, i ascending.
 void PreconditionedConjugateGradient::forward(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v,
-                                              Eigen::VectorXd& y) const {
+                                              Eigen::VectorXd& y, Eigen::VectorXd& hat) const {
   const std::size_t n = a.block_rows();
   if (a.storage() == CouplingStorage::pair_form) {  // y_i = v_i - G_i sum_{j<i} C_ij hat_j, hat_i = G_i^T y_i
-    hat_.resize(v.size());
+    hat.resize(v.size());
     for (std::size_t i = 0; i < n; ++i) {
       Vector6 acc = Vector6::Zero();
-      for (const Entry* e = a.row_begin(i); e != a.row_diagonal(i); ++e) acc += a.pair_form_times(*e, hat_);
+      for (const Entry* e = a.row_begin(i); e != a.row_diagonal(i); ++e) acc += a.pair_form_times(*e, hat);
       const Vector6 s = v.segment<6>(6 * i) - a.diagonal()[i] * acc;
       y.segment<6>(6 * i) = s;
-      hat_.segment<6>(6 * i).noalias() = a.diagonal()[i].transpose() * s;
+      hat.segment<6>(6 * i).noalias() = a.diagonal()[i].transpose() * s;
     }
     return;
   }
@@ -84,15 +84,15 @@ void PreconditionedConjugateGradient::forward(const SymmetricBlockMatrix& a, con
 
 // y_i = v_i - sum_{j>i} A'_ij y_j, i descending.
 void PreconditionedConjugateGradient::backward(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v,
-                                               Eigen::VectorXd& y) const {
+                                               Eigen::VectorXd& y, Eigen::VectorXd& hat) const {
   if (a.storage() == CouplingStorage::pair_form) {
-    hat_.resize(v.size());
+    hat.resize(v.size());
     for (std::size_t i = a.block_rows(); i-- > 0;) {
       Vector6 acc = Vector6::Zero();
-      for (const Entry* e = a.row_diagonal(i); e != a.row_end(i); ++e) acc += a.pair_form_times(*e, hat_);
+      for (const Entry* e = a.row_diagonal(i); e != a.row_end(i); ++e) acc += a.pair_form_times(*e, hat);
       const Vector6 s = v.segment<6>(6 * i) - a.diagonal()[i] * acc;
       y.segment<6>(6 * i) = s;
-      hat_.segment<6>(6 * i).noalias() = a.diagonal()[i].transpose() * s;
+      hat.segment<6>(6 * i).noalias() = a.diagonal()[i].transpose() * s;
     }
     return;
   }
@@ -137,9 +137,8 @@ ConjugateGradientReport PreconditionedConjugateGradient::solve(const SymmetricBl
                                                                Preconditioner kind) {
   if (!a.scaled()) throw InputError("conjugate gradient: the matrix was not prepared (scaled) for it");
   const std::ptrdiff_t size = b.size();
-  // r is the true residual of the guess, used only before the iterations; its storage then holds the candidates.
-  Eigen::VectorXd& r = candidate_;
-  for (Eigen::VectorXd* v : {&rho_, &u_, &p_, &q_, &t_, &w_, &candidate_}) v->resize(size);
+  Eigen::VectorXd& r = spare_;  // the true residual, used only before the iterations
+  for (Eigen::VectorXd* v : {&rho_, &u_, &p_, &q_, &t_, &w_, &spare_}) v->resize(size);
   if (x.size() != size) x = Eigen::VectorXd::Zero(size);
   ConjugateGradientReport report;
   report.converged = true;
@@ -163,7 +162,7 @@ ConjugateGradientReport PreconditionedConjugateGradient::solve(const SymmetricBl
 
   // Correction d = S^T u (Jacobi) or S^T K'^-T u (Gauss-Seidel); CG residual rho = S r or K'^-1 S r.
   scale(a, r, ssor ? w_ : rho_);
-  if (ssor) forward(a, w_, rho_);
+  if (ssor) forward(a, w_, rho_, spare_);
   u_.setZero();
   p_ = rho_;
   double rr = dot(rho_, rho_);
@@ -171,13 +170,13 @@ ConjugateGradientReport PreconditionedConjugateGradient::solve(const SymmetricBl
   // The candidate x + d and the norm of its true residual b - A (x + d).
   auto check_candidate = [&] {
     if (ssor) {
-      backward(a, u_, w_);
+      backward(a, u_, w_, spare_);
       unscale(a, w_, t_);
     } else {
       unscale(a, u_, t_);
     }
-    candidate_ = x + t_;
-    a.multiply(candidate_, q_);
+    spare_ = x + t_;  // the candidate
+    a.multiply(spare_, q_);
     w_ = b - q_;
     return std::sqrt(dot(w_, w_));
   };
@@ -185,15 +184,18 @@ ConjugateGradientReport PreconditionedConjugateGradient::solve(const SymmetricBl
   bool checked = true;
   while (k < max_iterations) {
     if (ssor) {  // q = t + K'^-1 (p - t), t = K'^-T p
-      backward(a, p_, t_);
+      backward(a, p_, t_, spare_);
       w_ = p_ - t_;
-      forward(a, w_, q_);
+      forward(a, w_, q_, spare_);
       q_ += t_;
     } else {
-      multiply(a, p_, q_);
+      multiply(a, p_, q_, spare_);
     }
     const double pq = dot(p_, q_);
-    if (!(pq > 0.0)) break;  // breakdown: not SPD or not finite
+    if (!(pq > 0.0)) {  // breakdown: not SPD or not finite; the candidate of the current iterate is formed again
+      checked = false;
+      break;
+    }
     const double alpha = rr / pq;
     u_.noalias() += alpha * p_;
     rho_.noalias() -= alpha * q_;
@@ -211,7 +213,7 @@ ConjugateGradientReport PreconditionedConjugateGradient::solve(const SymmetricBl
     }
   }
   if (!checked) true_norm = check_candidate();  // breakdown before a check: report the last iterate honestly
-  if (k > 0) x = candidate_;
+  if (k > 0) x = spare_;
   report.iterations = k;
   report.residual = true_norm / b_norm;
   report.converged = std::isfinite(report.residual) && true_norm <= tolerance * b_norm;

@@ -42,15 +42,21 @@ class PreconditionedConjugateGradient {
 
  private:
   // In the scaled space (unit diagonal blocks):
-  void multiply(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v, Eigen::VectorXd& y) const;  // y = A' v
-  void forward(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v, Eigen::VectorXd& y) const;   // K'^-1 v
-  void backward(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v, Eigen::VectorXd& y) const;  // K'^-T v
+  // hat: scratch of the pair form (G_j^T of the rows done), distinct from v and y.
+  void multiply(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v, Eigen::VectorXd& y,
+                Eigen::VectorXd& hat) const;  // y = A' v
+  void forward(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v, Eigen::VectorXd& y,
+               Eigen::VectorXd& hat) const;  // K'^-1 v
+  void backward(const SymmetricBlockMatrix& a, const Eigen::VectorXd& v, Eigen::VectorXd& y,
+                Eigen::VectorXd& hat) const;  // K'^-T v
   static void scale(const SymmetricBlockMatrix& a, const Eigen::VectorXd& r, Eigen::VectorXd& y);    // y = S r
   static void unscale(const SymmetricBlockMatrix& a, const Eigen::VectorXd& u, Eigen::VectorXd& y);  // y = S^T u
   double dot(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
 
-  Eigen::VectorXd rho_, u_, p_, q_, t_, w_, candidate_;
-  mutable Eigen::VectorXd hat_;  // pair-form sweeps: G_j^T y_j of the rows done
+  Eigen::VectorXd rho_, u_, p_, q_, t_, w_;
+  // The true residual of the guess before the iterations, the pair-form sweeps' scratch within them, and the
+  // candidate x + d when it is checked: one vector, each use ending before the next begins.
+  Eigen::VectorXd spare_;
   std::vector<double> chunk_sums_;
 };
 

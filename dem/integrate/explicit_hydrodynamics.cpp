@@ -86,10 +86,10 @@ void ExplicitHydrodynamics::evaluate(const Particles& p, const std::vector<int>&
         const std::uint32_t k = incident_[e];
         const ActivePair& pr = pairs[k];
         const hydro::PairLubrication& lub = law_(species[pr.i], species[pr.j]);
-        const double gap = pr.geometry.gap();
+        const double gap = pr.gap();
         const Mat3 e_i = flow.strain_rate(p.position[pr.i]), e_j = flow.strain_rate(p.position[pr.j]);
-        const hydro::Matrix12 r = lub.resistance(pr.geometry.n, gap);
-        const hydro::Vector12 strain = lub.strain_forces(pr.geometry.n, gap, e_i, e_j);
+        const hydro::Matrix12 r = lub.resistance(pr.geometry().n, gap);
+        const hydro::Vector12 strain = lub.strain_forces(pr.geometry().n, gap, e_i, e_j);
         const bool is_i = pr.i == static_cast<std::uint32_t>(i);
         const int self = is_i ? 0 : 6, other = is_i ? 6 : 0;
         const Vector6 dv_other = dv.segment<6>(6 * static_cast<Eigen::Index>(is_i ? pr.j : pr.i));
@@ -100,7 +100,7 @@ void ExplicitHydrodynamics::evaluate(const Particles& p, const std::vector<int>&
         coupling_row += cb.cwiseAbs().rowwise().sum();
         if (dipole && !is_i) {  // force on j, -(R_ji dv_i + R_jj dv_j) + (R_FE : E)_j, as the solver forms it
           const Vector6 f_j = -(cb * dv_other + r.block<6, 6>(6, 6) * dv_self) + strain.segment<6>(6);
-          lubrication += -sym_outer(pr.geometry.d, Vec3(f_j.head<3>()));
+          lubrication += -sym_outer(pr.d, Vec3(f_j.head<3>()));
         } else if (!dipole && is_i) {
           hydro::PairMotion m;
           m.du_i = dv_self.head<3>();
@@ -109,7 +109,7 @@ void ExplicitHydrodynamics::evaluate(const Particles& p, const std::vector<int>&
           m.dw_j = dv_other.tail<3>();
           m.e_i = e_i;
           m.e_j = e_j;
-          const hydro::PairHydroForce h = lub.evaluate(pr.geometry.n, gap, m);
+          const hydro::PairHydroForce h = lub.evaluate(pr.geometry().n, gap, m);
           lubrication += h.stresslet_i + h.stresslet_j;
         }
       }

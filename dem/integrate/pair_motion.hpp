@@ -35,7 +35,7 @@ struct PairMotionLimits {
 // (gammadot L_y); records: the contact stage's per-pair records (which pairs are in contact), same order as pairs;
 // ranking: kept by the caller for rank > 1 (time_step_control.hpp, bound_rank).
 double pair_motion_rate(const std::vector<ActivePair>& pairs, const Particles& p, double image_velocity,
-                        const std::vector<ContactRecord>& records, const PairMotionLimits& limits,
+                        const ContactRecords& records, const PairMotionLimits& limits,
                         std::size_t rank = 1, KthLargest* ranking = nullptr);
 
 }  // namespace suspend

@@ -72,19 +72,20 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
     }
   }
   for (std::size_t r = 0; r < n; ++r) link_count_[r + 1] += link_count_[r];
-  resize_with_headroom(links_, link_count_[n]);
+  std::vector<BlockLink>& links = matrix_.links_to_set();
+  resize_with_headroom(links, link_count_[n]);
   resize_with_headroom(link_pair_, link_count_[n]);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     if (pair_link_[k] < 0) continue;
     const ActivePair& pr = pairs[k];
     const std::uint32_t l = link_count_[std::min(row_of_[pr.i], row_of_[pr.j])]++;
     pair_link_[k] = static_cast<std::int32_t>(l);
-    links_[l] = {row_of_[pr.i], row_of_[pr.j]};
+    links[l] = {row_of_[pr.i], row_of_[pr.j]};
     link_pair_[l] = static_cast<std::uint32_t>(k);
   }
   const bool compact = params_.storage == CouplingStorage::pair_form;
-  matrix_.set_structure(n, links_, params_.storage);
-  const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(links_.size());
+  matrix_.set_structure(n, params_.storage);
+  const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(links.size());
   if (compact) {
     // Sliding contacts' links get a slip entry (the only blocks with terms along the slip direction).
     resize_with_headroom(compact_on_j_, nl);
@@ -128,12 +129,12 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
       const std::size_t k = link_pair_[l];
       const ActivePair& pr = pairs[k];
       const hydro::PairLubrication& lub = law_(species[pr.i], species[pr.j]);
-      const double gap = pr.geometry.gap();
-      hydro::Matrix12 r = lub.resistance(pr.geometry.n, gap);
-      hydro::Vector12 strain = lub.strain_forces(pr.geometry.n, gap, flow.strain_rate(p.position[pr.i]),
+      const double gap = pr.gap();
+      hydro::Matrix12 r = lub.resistance(pr.geometry().n, gap);
+      hydro::Vector12 strain = lub.strain_forces(pr.geometry().n, gap, flow.strain_rate(p.position[pr.i]),
                                                  flow.strain_rate(p.position[pr.j]));
       if (stiff(implicit, k)) {  // backward-Euler contact terms (implicit_contacts.hpp)
-        const ContactStep cs = contact_step(pr.geometry, p.position[pr.i], (*implicit.stiffness)[k], implicit.dt, flow);
+        const ContactStep cs = contact_step(pr.geometry(), p.position[pr.i], (*implicit.stiffness)[k], implicit.dt, flow);
         r += cs.resistance();
         strain += cs.ambient_force();
       }
@@ -146,8 +147,8 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
         const Vec3 t = s < 0 ? Vec3::Zero() : Vec3((*implicit.stiffness)[k].slip_direction);
         SlipForm slip, self_slip;
         PairFormBlock self;
-        if (!compress(r.block<6, 6>(0, 6), pr.geometry.n, t, matrix_.pair_form()[l], slip) ||
-            !compress(r.block<6, 6>(6, 6), pr.geometry.n, t, self, self_slip))
+        if (!compress(r.block<6, 6>(0, 6), pr.geometry().n, t, matrix_.pair_form()[l], slip) ||
+            !compress(r.block<6, 6>(6, 6), pr.geometry().n, t, self, self_slip))
           throw NumericalError("resistance solver: the block of pair (" + std::to_string(pr.i) + ", " +
                                std::to_string(pr.j) + ") is not of the pair form (hydrodynamics.solver.storage = "
                                "pair_form); use storage: dense");
@@ -162,7 +163,7 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
       }
     }
     for (std::ptrdiff_t c = 0; c < count; ++c) {
-      const BlockLink& link = links_[start + c];
+      const BlockLink& link = links[start + c];
       chunk_[c].self_i.add_to(matrix_.diagonal()[link.i]);
       chunk_[c].self_j.add_to(matrix_.diagonal()[link.j]);
       rhs_.segment<6>(6 * static_cast<Eigen::Index>(link.i)) += chunk_[c].strain.segment<6>(0);
@@ -351,39 +352,49 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
                                          const Eigen::VectorXd& x, bool strain_driven, SolveResult& out,
                                          const ImplicitContacts& implicit) {
   const std::ptrdiff_t np = static_cast<std::ptrdiff_t>(pairs.size());
-  resize_with_headroom(out.lubrication_force_on_j, np);
+  // Pair form: the lubrication forces on j are not kept (24 B a pair) but formed again as the stress is summed.
+  const bool compact = params_.storage == CouplingStorage::pair_form;
+  if (compact)
+    out.lubrication_force_on_j.clear();
+  else
+    resize_with_headroom(out.lubrication_force_on_j, np);
   if (implicit.enabled())
     out.contact_change_on_j.assign(np, Vec3::Zero());
   else
     out.contact_change_on_j.clear();
   const bool dipole = params_.lubrication_stress == LubricationStress::force_dipole;
   if (!dipole) pair_stress_.resize(np);
-  // F_j^lub = -(R_ji dV_i + R_jj dV_j) + (R_FE : E)_j from the stored blocks; each pair writes its own slots.
+  // F_j^lub = -(R_ji dV_i + R_jj dV_j) + (R_FE : E)_j from the stored blocks, less the implicit contact change (the
+  // blocks hold lubrication + implicit contact terms).
+  auto force_on_j = [&](std::ptrdiff_t k) {
+    const ActivePair& pr = pairs[k];
+    const std::int32_t l = pair_link_[k];
+    const Vector6 dv_i = x.segment<6>(6 * static_cast<Eigen::Index>(pr.i));
+    const Vector6 dv_j = x.segment<6>(6 * static_cast<Eigen::Index>(pr.j));
+    Vec3 f_j = -(matrix_.coupling_transpose_times(l, dv_i).head<3>() +
+                 (compact ? self_force(l, pr.geometry().n, dv_j) : Vec3(on_j_[l].self_force_rows * dv_j)));
+    if (strain_driven) f_j += compact ? compact_on_j_[l].strain_force : on_j_[l].strain_force;
+    if (stiff(implicit, k)) f_j -= out.contact_change_on_j[k];
+    return f_j;
+  };
+  // Each pair writes its own slots.
 #pragma omp parallel for schedule(static) if (np > 256)
   for (std::ptrdiff_t k = 0; k < np; ++k) {
     const ActivePair& pr = pairs[k];
-    const std::int32_t l = pair_link_[k];
-    if (l < 0) {
-      out.lubrication_force_on_j[k].setZero();
+    if (pair_link_[k] < 0) {
+      if (!compact) out.lubrication_force_on_j[k].setZero();
       if (!dipole) pair_stress_[k].setZero();
       continue;
     }
     const Vector6 dv_i = x.segment<6>(6 * static_cast<Eigen::Index>(pr.i));
     const Vector6 dv_j = x.segment<6>(6 * static_cast<Eigen::Index>(pr.j));
-    // The blocks hold lubrication + implicit contact terms; the contact change is taken out of the force on j.
-    const bool compact = params_.storage == CouplingStorage::pair_form;
-    Vec3 f_j = -(matrix_.coupling_transpose_times(l, dv_i).head<3>() +
-                 (compact ? self_force(l, pr.geometry.n, dv_j) : Vec3(on_j_[l].self_force_rows * dv_j)));
-    if (strain_driven) f_j += compact ? compact_on_j_[l].strain_force : on_j_[l].strain_force;
-    out.lubrication_force_on_j[k] = f_j;
     if (stiff(implicit, k)) {
       hydro::Vector12 dv;
       dv << dv_i, dv_j;
-      const Vec3 change =
-          contact_step(pr.geometry, p.position[pr.i], (*implicit.stiffness)[k], implicit.dt, flow).force_change_on_j(dv);
-      out.contact_change_on_j[k] = change;
-      out.lubrication_force_on_j[k] -= change;
+      out.contact_change_on_j[k] =
+          contact_step(pr.geometry(), p.position[pr.i], (*implicit.stiffness)[k], implicit.dt, flow).force_change_on_j(dv);
     }
+    if (!compact) out.lubrication_force_on_j[k] = force_on_j(k);
     if (!dipole) {
       hydro::PairMotion m;
       m.du_i = dv_i.head<3>();
@@ -392,7 +403,7 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
       m.dw_j = dv_j.tail<3>();
       m.e_i = flow.strain_rate(p.position[pr.i]);
       m.e_j = flow.strain_rate(p.position[pr.j]);
-      const hydro::PairHydroForce h = law_(species[pr.i], species[pr.j]).evaluate(pr.geometry.n, pr.geometry.gap(), m);
+      const hydro::PairHydroForce h = law_(species[pr.i], species[pr.j]).evaluate(pr.geometry().n, pr.gap(), m);
       pair_stress_[k] = h.stresslet_i + h.stresslet_j;
     }
   }
@@ -401,13 +412,14 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
   // In list order; pairs beyond the outer cutoff add exact zeros and are skipped.
   if (dipole) {
     for (std::ptrdiff_t k = 0; k < np; ++k)
-      if (pair_link_[k] >= 0) lub += -sym_outer(pairs[k].geometry.d, out.lubrication_force_on_j[k]);
+      if (pair_link_[k] >= 0)
+        lub += -sym_outer(pairs[k].d, compact ? force_on_j(k) : out.lubrication_force_on_j[k]);
   } else {
     for (const Mat3& s : pair_stress_) lub += s;
   }
   if (implicit.enabled())
     for (std::ptrdiff_t k = 0; k < np; ++k)
-      if (stiff(implicit, k)) add_contact_change_virial(pairs[k].geometry, out.contact_change_on_j[k], out.stress);
+      if (stiff(implicit, k)) add_contact_change_virial(pairs[k].geometry(), out.contact_change_on_j[k], out.stress);
   Mat3& hyd = out.stress[Contribution::hydrodynamic];
   for (std::size_t i = 0; i < p.size(); ++i) hyd += hydro::stokes_stresslet(p.radius[i], p.position[i], flow);
 }

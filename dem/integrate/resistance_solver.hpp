@@ -78,7 +78,8 @@ struct ResistanceSolverParams {
 // contact_change_on_j in contact_normal and contact_tangential), CG iterations (0 for Cholesky) and the relative
 // residual |b - R dV| / |b| (dem/hydrodynamic_model.hpp), plus the pair forces.
 struct SolveResult : HydroResponse {
-  std::vector<Vec3> lubrication_force_on_j;  // per pair of the list given (zero beyond the outer cutoff)
+  // Per pair of the list given (zero beyond the outer cutoff); empty with storage pair_form.
+  std::vector<Vec3> lubrication_force_on_j;
   std::size_t lubricated_pairs = 0;          // pairs within the outer cutoff
 };
 
@@ -224,7 +225,6 @@ class ResistanceSolver {
     hydro::Vector12 strain;
   };
   static constexpr std::ptrdiff_t assembly_chunk = 2048;
-  std::vector<BlockLink> links_;
   std::vector<std::uint32_t> link_pair_;
   std::vector<ForceOnJ> on_j_;
   std::vector<PairFormForceOnJ> compact_on_j_;

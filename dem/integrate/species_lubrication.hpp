@@ -19,7 +19,7 @@ class SpeciesLubrication {
 
   const hydro::PairLubrication& operator()(int si, int sj) const { return laws_[si * radius_.size() + sj]; }
   bool active(const ActivePair& pr, const std::vector<int>& species) const {
-    return (*this)(species[pr.i], species[pr.j]).active(pr.geometry.gap());
+    return (*this)(species[pr.i], species[pr.j]).active(pr.gap());
   }
   // Throws InputError when species[i] does not index a radius equal to p.radius[i] (1e-12 relative) or a pair has an
   // end outside the particles or twice the same particle.

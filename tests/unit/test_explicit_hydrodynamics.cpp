@@ -66,7 +66,7 @@ double max_abs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
 TEST(ExplicitHydrodynamics, MatrixFreeForcesStressAndRateEqualTheAssembledOnes) {
   Configuration c = dense_sheared(600);
   int across = 0;
-  for (const ActivePair& pr : c.pairs) across += pr.y_images != 0 && pr.geometry.gap() <= 0.25 ? 1 : 0;
+  for (const ActivePair& pr : c.pairs) across += pr.y_images != 0 && pr.gap() <= 0.25 ? 1 : 0;
   ASSERT_GT(across, 10);  // lubricated pairs across the sheared faces
   const AmbientFlow flow = AmbientFlow::wavy_shear(1.3, 0.8, 1, c.box.length().y());
 

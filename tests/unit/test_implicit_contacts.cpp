@@ -148,12 +148,12 @@ TEST(ImplicitContacts, VelocitiesBalanceTheEndOfStepContactForces) {
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const ActivePair& pr = pairs[k];
     const Vec3 f = sim.pair_forces()[k];
-    const Vec3 f_t = f - f.dot(pr.geometry.n) * pr.geometry.n;
+    const Vec3 f_t = f - f.dot(pr.geometry().n) * pr.geometry().n;
     force[pr.j] += f;
     force[pr.i] -= f;
-    const Vec3 nxf = pr.geometry.n.cross(f_t);
-    torque[pr.i] -= pr.geometry.lever_i() * nxf;
-    torque[pr.j] -= pr.geometry.lever_j() * nxf;
+    const Vec3 nxf = pr.geometry().n.cross(f_t);
+    torque[pr.i] -= pr.geometry().lever_i() * nxf;
+    torque[pr.j] -= pr.geometry().lever_j() * nxf;
   }
   ResistanceSolver solver({1.0, 1.4}, params.resistance);
   SolveResult out;

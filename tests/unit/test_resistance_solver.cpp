@@ -403,13 +403,13 @@ TEST(ResistanceSolver, ConjugateGradientAgreesWithCholeskyAndBalancesForces) {
     mo.dw_j = b.angular_velocity[pr.j] - flow.angular_velocity(d.p.position[pr.j]);
     mo.e_i = flow.strain_rate(d.p.position[pr.i]);
     mo.e_j = flow.strain_rate(d.p.position[pr.j]);
-    const hydro::PairHydroForce h = law.evaluate(pr.geometry.n, pr.geometry.gap(), mo);
+    const hydro::PairHydroForce h = law.evaluate(pr.geometry().n, pr.gap(), mo);
     fsum[pr.i] += h.force_i;
     fsum[pr.j] += h.force_j;
     tsum[pr.i] += h.torque_i;
     tsum[pr.j] += h.torque_j;
     scale = std::max(scale, h.force_j.norm());
-    dipole -= sym_outer(pr.geometry.d, h.force_j);
+    dipole -= sym_outer(pr.d, h.force_j);
     EXPECT_LT((b.lubrication_force_on_j[k] - h.force_j).norm(), 1e-9 * (1.0 + h.force_j.norm()));
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -451,7 +451,7 @@ TEST(ResistanceSolver, WarmStartReducesIterationsAndCholeskyReusesItsAnalysis) {
   for (std::size_t i = 0; i < d.p.size(); ++i) d.p.position[i].x() += 1e-4 * std::sin(double(i));
   for (ActivePair& pr : d.pairs) {
     const Vec3 dx = d.box.minimum_image(d.p.position[pr.i], d.p.position[pr.j]).d;
-    pr.geometry = PairGeometry::from(dx, pr.geometry.a_i, pr.geometry.a_j);
+    pr.set_geometry(PairGeometry::from(dx, pr.a_i, pr.a_j));
   }
   warm.solve(d.p, d.pairs, flow, d.force, d.torque, out);
   const int warm_iterations = out.iterations;
@@ -517,7 +517,7 @@ TEST(ResistanceSolver, LeesEdwardsPairMatchesTheSamePairInsideTheBox) {
   compact_active_pairs(list, across, box, 0.3, pairs);
   ASSERT_EQ(pairs.size(), 1u);
   ASSERT_NE(pairs[0].y_images, 0);
-  ASSERT_LT((pairs[0].geometry.d - d).norm(), 1e-12);
+  ASSERT_LT((pairs[0].d - d).norm(), 1e-12);
 
   const Particles inside = make_particles({Vec3(5.0, 3.0, 6.0), Vec3(5.0, 3.0, 6.0) + d}, {0, 1}, radii);
   const std::vector<Vec3> force{Vec3(0.3, -0.2, 0.5), Vec3(-0.3, 0.2, -0.5)}, torque{Vec3(0.1, 0.0, -0.2),
@@ -635,7 +635,7 @@ TEST(ResistanceSolver, StressControlPartsShareOneMatrixAndEqualTwoSeparateSolves
     for (std::size_t i = 0; i < d.p.size(); ++i) d.p.position[i].y() += 1e-4 * std::cos(double(i));
     for (ActivePair& pr : d.pairs) {
       const Vec3 dx = d.box.minimum_image(d.p.position[pr.i], d.p.position[pr.j]).d;
-      pr.geometry = PairGeometry::from(dx, pr.geometry.a_i, pr.geometry.a_j);
+      pr.set_geometry(PairGeometry::from(dx, pr.a_i, pr.a_j));
     }
     for (auto& f : d.force) f *= 0.99;
   }
