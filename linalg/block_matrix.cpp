@@ -19,10 +19,12 @@ void SymmetricBlockMatrix::set_structure(std::size_t n, CouplingStorage storage)
   const std::vector<BlockLink>& links = links_;
   scaled_ = false;
   storage_ = storage;
-  diagonal_.resize(n);
+  rows_ = n;
   if (storage == CouplingStorage::dense) {
+    diagonal_.resize(n);
     resize_with_headroom(coupling_, links.size());
   } else {
+    packed_diagonal_.resize(n);
     resize_with_headroom(pair_form_, links.size());
     resize_with_headroom(slip_of_, links.size());
   }
@@ -59,8 +61,21 @@ void SymmetricBlockMatrix::set_structure(std::size_t n, CouplingStorage storage)
 
 bool SymmetricBlockMatrix::factor_diagonal() {
   if (scaled_) return true;  // already in scaled form
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(diagonal_.size());
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(rows_);
   bool spd = true;
+  if (storage_ == CouplingStorage::pair_form) {  // G_i = L_i^-1, packed, in place of D_i; the blocks stay plain
+#pragma omp parallel for schedule(static) if (n > 512) reduction(&& : spd)
+    for (std::ptrdiff_t r = 0; r < n; ++r) {
+      const Eigen::LLT<Matrix6> llt(packed_diagonal_[r].unpacked());
+      spd = spd && llt.info() == Eigen::Success;
+      Matrix6 g = Matrix6::Identity();
+      const Matrix6 l = llt.matrixL();
+      solve_lower(l, g);
+      pack_lower(g, packed_diagonal_[r].upper);
+    }
+    scaled_ = spd;
+    return spd;
+  }
 #pragma omp parallel for schedule(static) if (n > 512) reduction(&& : spd)
   for (std::ptrdiff_t r = 0; r < n; ++r) {
     const Eigen::LLT<Matrix6> llt(diagonal_[r]);
@@ -69,16 +84,6 @@ bool SymmetricBlockMatrix::factor_diagonal() {
     diagonal_[r].triangularView<Eigen::StrictlyUpper>().setZero();  // the dense products below rely on it
   }
   if (!spd) return false;
-  if (storage_ == CouplingStorage::pair_form) {  // G_i = L_i^-1 in place of L_i; the blocks stay plain
-#pragma omp parallel for schedule(static) if (n > 512)
-    for (std::ptrdiff_t r = 0; r < n; ++r) {
-      Matrix6 g = Matrix6::Identity();
-      solve_lower(diagonal_[r], g);
-      diagonal_[r] = g;
-    }
-    scaled_ = true;
-    return true;
-  }
   const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(links_.size());
 #pragma omp parallel for schedule(static) if (nl > 512)
   for (std::ptrdiff_t k = 0; k < nl; ++k) {  // L_i^-1 C L_j^-T: (L_j^-1 (L_i^-1 C)^T)^T
@@ -100,17 +105,18 @@ Vector6 SymmetricBlockMatrix::coupling_transpose_times(std::size_t k, const Vect
 }
 
 void SymmetricBlockMatrix::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(diagonal_.size());
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(rows_);
   y.resize(x.size());
   if (storage_ == CouplingStorage::pair_form) {  // D_r x_r = G_r^-1 G_r^-T x_r once scaled
 #pragma omp parallel for schedule(static) if (n > 512)
     for (std::ptrdiff_t r = 0; r < n; ++r) {
       Vector6 acc = x.segment<6>(6 * r);
       if (scaled_) {
-        solve_lower_transpose(diagonal_[r], acc);
-        solve_lower(diagonal_[r], acc);
+        const Matrix6 g = unpack_lower(packed_diagonal_[r].upper);
+        solve_lower_transpose(g, acc);
+        solve_lower(g, acc);
       } else {
-        acc = diagonal_[r] * acc;
+        acc = packed_diagonal_[r].unpacked() * Vector6(acc);
       }
       for (const RowEntry* e = row_begin(r); e != row_end(r); ++e) acc += pair_form_times(*e, x);
       y.segment<6>(6 * r) = acc;
@@ -141,12 +147,12 @@ void SymmetricBlockMatrix::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y
 }
 
 Eigen::MatrixXd SymmetricBlockMatrix::dense() const {
-  const std::size_t n = diagonal_.size();
+  const std::size_t n = rows_;
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(6 * n, 6 * n);
   if (storage_ == CouplingStorage::pair_form) {
     for (std::size_t r = 0; r < n; ++r) {
-      const Matrix6 l = scaled_ ? Matrix6(diagonal_[r].inverse()) : Matrix6::Zero();
-      a.block<6, 6>(6 * r, 6 * r) = scaled_ ? Matrix6(l * l.transpose()) : diagonal_[r];
+      const Matrix6 l = scaled_ ? Matrix6(unpack_lower(packed_diagonal_[r].upper).inverse()) : Matrix6::Zero();
+      a.block<6, 6>(6 * r, 6 * r) = scaled_ ? Matrix6(l * l.transpose()) : packed_diagonal_[r].unpacked();
     }
     for (std::size_t k = 0; k < links_.size(); ++k) {
       const Matrix6 c = expand(pair_form_[k], slip(k));

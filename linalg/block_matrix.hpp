@@ -9,8 +9,9 @@
 //
 // Storage (set_structure): dense 6x6 coupling blocks (the default), or CouplingStorage::pair_form, each block as a
 // PairFormBlock (pair_form_block.hpp: n and 6 numbers, 72 B instead of 288 B; with a SlipForm for the links whose
-// contact slides), for the largest systems. A pair-form block cannot be scaled in place, so the scaled form keeps
-// the plain blocks C and holds G_i = L_i^-1 in diagonal(): A'_ij v = G_i C_ij G_j^T v.
+// contact slides), for the largest systems. Its diagonal blocks are packed too (packed_diagonal(), 21 numbers; plain:
+// the symmetric D_i; scaled: G_i = L_i^-1, lower, see pack_lower), and diagonal() is empty. A pair-form block cannot be
+// scaled in place, so the scaled form keeps the plain blocks C: A'_ij v = G_i C_ij G_j^T v.
 //
 // Layout: the coupling blocks are contiguous in link order; each block row lists its links sorted by column (ties
 // in link order), so the layout depends only on the link list, and the entries left of the diagonal (the strictly
@@ -19,6 +20,7 @@
 // storage: no allocation once the largest link count has been seen.
 #pragma once
 #include <Eigen/Dense>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -45,6 +47,68 @@ inline void solve_lower_transpose(const Matrix6& l, X&& x) {
     for (int c = r + 1; c < 6; ++c) x.row(r) -= l(c, r) * x.row(c);
     x.row(r) /= l(r, r);
   }
+}
+
+// A symmetric 6x6 block stored as its upper triangle, row by row. The self blocks of R_lub are exactly symmetric
+// (hydro::PairLubrication::assemble builds them from n n^T and from transposed copies), so packing loses nothing
+// and adding the packed block gives the same bits as adding the full one.
+struct PackedSymmetric6 {
+  std::array<double, 21> upper;
+  // Index of (r, r) in upper.
+  static constexpr int diagonal_index(int r) { return 6 * r - r * (r - 1) / 2; }
+  void pack(const Matrix6& m) {
+    int k = 0;
+    for (int r = 0; r < 6; ++r)
+      for (int c = r; c < 6; ++c) upper[k++] = m(r, c);
+  }
+  Matrix6 unpacked() const {
+    Matrix6 m;
+    int k = 0;
+    for (int r = 0; r < 6; ++r)
+      for (int c = r; c < 6; ++c) m(r, c) = m(c, r) = upper[k++];
+    return m;
+  }
+  void add_to(PackedSymmetric6& d) const {
+    for (std::size_t k = 0; k < upper.size(); ++k) d.upper[k] += upper[k];
+  }
+  void add_to(Matrix6& d) const {
+    int k = 0;
+    for (int r = 0; r < 6; ++r) {
+      d(r, r) += upper[k++];
+      for (int c = r + 1; c < 6; ++c, ++k) {
+        d(r, c) += upper[k];
+        d(c, r) += upper[k];
+      }
+    }
+  }
+};
+
+// A lower-triangular 6x6 factor stored as its lower triangle row by row (entry (r, c), c <= r, at r (r + 1) / 2 + c),
+// in the storage of a PackedSymmetric6.
+inline Matrix6 unpack_lower(const std::array<double, 21>& g) {
+  Matrix6 m = Matrix6::Zero();
+  for (int r = 0, k = 0; r < 6; ++r)
+    for (int c = 0; c <= r; ++c) m(r, c) = g[k++];
+  return m;
+}
+inline void pack_lower(const Matrix6& m, std::array<double, 21>& g) {
+  for (int r = 0, k = 0; r < 6; ++r)
+    for (int c = 0; c <= r; ++c) g[k++] = m(r, c);
+}
+inline Vector6 lower_times(const std::array<double, 21>& g, const Vector6& v) {
+  Vector6 y;
+  for (int r = 0, k = 0; r < 6; ++r) {
+    double s = 0.0;
+    for (int c = 0; c <= r; ++c) s += g[k++] * v[c];
+    y[r] = s;
+  }
+  return y;
+}
+inline Vector6 lower_transpose_times(const std::array<double, 21>& g, const Vector6& v) {
+  Vector6 y = Vector6::Zero();
+  for (int r = 0, k = 0; r < 6; ++r)
+    for (int c = 0; c <= r; ++c) y[c] += g[k++] * v[r];
+  return y;
 }
 
 struct BlockLink {
@@ -74,8 +138,8 @@ class SymmetricBlockMatrix {
   bool scaled() const { return scaled_; }
   CouplingStorage storage() const { return storage_; }
 
-  std::size_t block_rows() const { return diagonal_.size(); }
-  std::size_t size() const { return 6 * diagonal_.size(); }
+  std::size_t block_rows() const { return rows_; }
+  std::size_t size() const { return 6 * rows_; }
   std::size_t links() const { return links_.size(); }
   const std::vector<BlockLink>& link_list() const { return links_; }
 
@@ -83,6 +147,13 @@ class SymmetricBlockMatrix {
   const std::vector<Matrix6>& diagonal() const { return diagonal_; }
   std::vector<Matrix6>& coupling() { return coupling_; }
   const std::vector<Matrix6>& coupling() const { return coupling_; }
+  std::vector<PackedSymmetric6>& packed_diagonal() { return packed_diagonal_; }
+  const std::vector<PackedSymmetric6>& packed_diagonal() const { return packed_diagonal_; }
+  // Pair form, scaled: G_r v and G_r^T v.
+  Vector6 g_times(std::size_t r, const Vector6& v) const { return lower_times(packed_diagonal_[r].upper, v); }
+  Vector6 g_transpose_times(std::size_t r, const Vector6& v) const {
+    return lower_transpose_times(packed_diagonal_[r].upper, v);
+  }
   std::vector<PairFormBlock>& pair_form() { return pair_form_; }
   const std::vector<PairFormBlock>& pair_form() const { return pair_form_; }
   std::vector<std::int32_t>& slip_of() { return slip_of_; }
@@ -117,6 +188,8 @@ class SymmetricBlockMatrix {
   std::vector<BlockLink> links_;
   std::vector<Matrix6> diagonal_, coupling_;
   std::vector<PairFormBlock> pair_form_;
+  std::vector<PackedSymmetric6> packed_diagonal_;
+  std::size_t rows_ = 0;
   std::vector<std::int32_t> slip_of_;
   std::vector<SlipForm> slips_;
   CouplingStorage storage_ = CouplingStorage::dense;

@@ -42,12 +42,12 @@ void PreconditionedConjugateGradient::multiply(const SymmetricBlockMatrix& a, co
     hat.resize(v.size());
 #pragma omp parallel for schedule(static) if (6 * n > parallel_threshold)
     for (std::ptrdiff_t i = 0; i < n; ++i)
-      hat.segment<6>(6 * i).noalias() = a.diagonal()[i].transpose() * v.segment<6>(6 * i);
+      hat.segment<6>(6 * i) = a.g_transpose_times(i, v.segment<6>(6 * i));
 #pragma omp parallel for schedule(static) if (6 * n > parallel_threshold)
     for (std::ptrdiff_t i = 0; i < n; ++i) {
       Vector6 acc = Vector6::Zero();
       for (const Entry* e = a.row_begin(i); e != a.row_end(i); ++e) acc += a.pair_form_times(*e, hat);
-      y.segment<6>(6 * i) = v.segment<6>(6 * i) + a.diagonal()[i] * acc;
+      y.segment<6>(6 * i) = v.segment<6>(6 * i) + a.g_times(i, acc);
     }
     return;
   }
@@ -69,9 +69,9 @@ void PreconditionedConjugateGradient::forward(const SymmetricBlockMatrix& a, con
     for (std::size_t i = 0; i < n; ++i) {
       Vector6 acc = Vector6::Zero();
       for (const Entry* e = a.row_begin(i); e != a.row_diagonal(i); ++e) acc += a.pair_form_times(*e, hat);
-      const Vector6 s = v.segment<6>(6 * i) - a.diagonal()[i] * acc;
+      const Vector6 s = v.segment<6>(6 * i) - a.g_times(i, acc);
       y.segment<6>(6 * i) = s;
-      hat.segment<6>(6 * i).noalias() = a.diagonal()[i].transpose() * s;
+      hat.segment<6>(6 * i) = a.g_transpose_times(i, s);
     }
     return;
   }
@@ -90,9 +90,9 @@ void PreconditionedConjugateGradient::backward(const SymmetricBlockMatrix& a, co
     for (std::size_t i = a.block_rows(); i-- > 0;) {
       Vector6 acc = Vector6::Zero();
       for (const Entry* e = a.row_diagonal(i); e != a.row_end(i); ++e) acc += a.pair_form_times(*e, hat);
-      const Vector6 s = v.segment<6>(6 * i) - a.diagonal()[i] * acc;
+      const Vector6 s = v.segment<6>(6 * i) - a.g_times(i, acc);
       y.segment<6>(6 * i) = s;
-      hat.segment<6>(6 * i).noalias() = a.diagonal()[i].transpose() * s;
+      hat.segment<6>(6 * i) = a.g_transpose_times(i, s);
     }
     return;
   }
@@ -105,15 +105,19 @@ void PreconditionedConjugateGradient::backward(const SymmetricBlockMatrix& a, co
 
 void PreconditionedConjugateGradient::scale(const SymmetricBlockMatrix& a, const Eigen::VectorXd& r,
                                             Eigen::VectorXd& y) {
-  if (a.storage() == CouplingStorage::pair_form)  // the diagonal holds G_i = L_i^-1
-    return for_each_block(a, r, y, [](const Matrix6& g, auto&& v) { v = g * Vector6(v); });
+  if (a.storage() == CouplingStorage::pair_form) {  // the packed diagonal holds G_i = L_i^-1
+    for (std::size_t i = 0; i < a.block_rows(); ++i) y.segment<6>(6 * i) = a.g_times(i, r.segment<6>(6 * i));
+    return;
+  }
   for_each_block(a, r, y, [](const Matrix6& l, auto&& v) { solve_lower(l, v); });
 }
 
 void PreconditionedConjugateGradient::unscale(const SymmetricBlockMatrix& a, const Eigen::VectorXd& u,
                                               Eigen::VectorXd& y) {
-  if (a.storage() == CouplingStorage::pair_form)
-    return for_each_block(a, u, y, [](const Matrix6& g, auto&& v) { v = g.transpose() * Vector6(v); });
+  if (a.storage() == CouplingStorage::pair_form) {
+    for (std::size_t i = 0; i < a.block_rows(); ++i) y.segment<6>(6 * i) = a.g_transpose_times(i, u.segment<6>(6 * i));
+    return;
+  }
   for_each_block(a, u, y, [](const Matrix6& l, auto&& v) { solve_lower_transpose(l, v); });
 }
 

@@ -109,9 +109,15 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
     const double a = p.radius[i];
     const hydro::StokesResistance s = hydro::stokes_resistance(a);
     const std::ptrdiff_t r = row_of_[i];
-    Matrix6& d = matrix_.diagonal()[r];
-    d.setZero();
-    d.diagonal() << s.translation, s.translation, s.translation, s.rotation, s.rotation, s.rotation;
+    if (compact) {
+      PackedSymmetric6& d = matrix_.packed_diagonal()[r];
+      d.upper.fill(0.0);
+      for (int c = 0; c < 6; ++c) d.upper[PackedSymmetric6::diagonal_index(c)] = c < 3 ? s.translation : s.rotation;
+    } else {
+      Matrix6& d = matrix_.diagonal()[r];
+      d.setZero();
+      d.diagonal() << s.translation, s.translation, s.translation, s.rotation, s.rotation, s.rotation;
+    }
     rhs_.segment<3>(6 * r) = force[i] + s.translation * (a * a / 6.0) * flow.velocity_laplacian(p.position[i]);
     rhs_.segment<3>(6 * r + 3) = torque[i];
   }
@@ -164,8 +170,13 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
     }
     for (std::ptrdiff_t c = 0; c < count; ++c) {
       const BlockLink& link = links[start + c];
-      chunk_[c].self_i.add_to(matrix_.diagonal()[link.i]);
-      chunk_[c].self_j.add_to(matrix_.diagonal()[link.j]);
+      if (compact) {
+        chunk_[c].self_i.add_to(matrix_.packed_diagonal()[link.i]);
+        chunk_[c].self_j.add_to(matrix_.packed_diagonal()[link.j]);
+      } else {
+        chunk_[c].self_i.add_to(matrix_.diagonal()[link.i]);
+        chunk_[c].self_j.add_to(matrix_.diagonal()[link.j]);
+      }
       rhs_.segment<6>(6 * static_cast<Eigen::Index>(link.i)) += chunk_[c].strain.segment<6>(0);
       rhs_.segment<6>(6 * static_cast<Eigen::Index>(link.j)) += chunk_[c].strain.segment<6>(6);
     }
@@ -324,7 +335,8 @@ double ResistanceSolver::relaxation_rate(const std::vector<double>& mass, const 
   double rate = 0.0;
   for (std::size_t i = 0; i < matrix_.block_rows(); ++i) {  // particle i, row r
     const std::size_t r = row_of_[i];
-    Vector6 row = matrix_.diagonal()[r].cwiseAbs().rowwise().sum();
+    const bool compact = matrix_.storage() == CouplingStorage::pair_form;  // the matrix of explicit_forces: plain
+    Vector6 row = (compact ? matrix_.packed_diagonal()[r].unpacked() : matrix_.diagonal()[r]).cwiseAbs().rowwise().sum();
     for (const auto* e = matrix_.row_begin(r); e != matrix_.row_end(r); ++e) {
       const Matrix6 c = matrix_.storage() == CouplingStorage::pair_form
                             ? expand(matrix_.pair_form()[e->link], matrix_.slip(e->link))

@@ -83,35 +83,6 @@ struct SolveResult : HydroResponse {
   std::size_t lubricated_pairs = 0;          // pairs within the outer cutoff
 };
 
-// A symmetric 6x6 block stored as its upper triangle, row by row. The self blocks of R_lub are exactly symmetric
-// (hydro::PairLubrication::assemble builds them from n n^T and from transposed copies), so packing loses nothing
-// and adding the packed block gives the same bits as adding the full one.
-struct PackedSymmetric6 {
-  std::array<double, 21> upper;
-  void pack(const Matrix6& m) {
-    int k = 0;
-    for (int r = 0; r < 6; ++r)
-      for (int c = r; c < 6; ++c) upper[k++] = m(r, c);
-  }
-  Matrix6 unpacked() const {
-    Matrix6 m;
-    int k = 0;
-    for (int r = 0; r < 6; ++r)
-      for (int c = r; c < 6; ++c) m(r, c) = m(c, r) = upper[k++];
-    return m;
-  }
-  void add_to(Matrix6& d) const {
-    int k = 0;
-    for (int r = 0; r < 6; ++r) {
-      d(r, r) += upper[k++];
-      for (int c = r + 1; c < 6; ++c, ++k) {
-        d(r, c) += upper[k];
-        d(c, r) += upper[k];
-      }
-    }
-  }
-};
-
 class ResistanceSolver {
  public:
   // species_radius[s]: radius of species s (a_1 units). One PairLubrication per ordered species pair.
