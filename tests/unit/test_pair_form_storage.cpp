@@ -14,6 +14,7 @@
 #include "dem/packing.hpp"
 #include "dem/simulation.hpp"
 #include "linalg/pair_form_block.hpp"
+#include "tests/dense_suspension.hpp"
 #include "tests/simulation_state.hpp"
 
 using namespace suspend;
@@ -90,45 +91,12 @@ TEST(PairFormBlock, ContactBlocksNeedTheSlipDirectionOnlyWhenSliding) {
 }
 
 namespace {
-
-struct Dense {
-  std::vector<double> radii{1.0, 1.4};
-  Particles p;
-  Box box;
-  std::vector<ActivePair> pairs;
-  std::vector<Vec3> force, torque;
-};
-
-// 200 bidisperse spheres (1 : 1.4, equal numbers) packed at phi = 0.5, random forces and torques.
-Dense dense_configuration() {
-  const std::size_t n = 200;
-  Dense d;
-  std::vector<double> a(n);
-  d.p.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    d.p.species[i] = i < n / 2 ? 0 : 1;
-    a[i] = d.p.radius[i] = d.radii[d.p.species[i]];
-  }
-  d.box = cube_for_volume_fraction(a, 0.5);
-  PackingParams pp;
-  pp.seed = 7;
-  d.p.position = random_packing(a, d.box, pp).position;
-  std::vector<NeighbourPair> list;
-  CellListSearch search;
-  search.find_pairs(d.p.position, d.p.radius, d.box, 0.3, list);
-  compact_active_pairs(list, d.p, d.box, 0.3, d.pairs);
-  std::mt19937 rng(11);
-  for (std::size_t i = 0; i < n; ++i) {
-    d.force.push_back(random_unit(rng));
-    d.torque.push_back(random_unit(rng));
-  }
-  return d;
-}
-
+// 200 bidisperse spheres (1 : 1.4) at phi = 0.5 with their pairs within a gap of 0.3, random forces and torques.
+test_support::DenseSuspension dense_configuration() { return test_support::dense_suspension(200, 0.3); }
 }  // namespace
 
 TEST(PairFormStorage, SolveGivesTheDenseSolutionAndStress) {
-  const Dense d = dense_configuration();
+  const test_support::DenseSuspension d = dense_configuration();
   const AmbientFlow flow = AmbientFlow::wavy_shear(1.0, 0.5, 1, d.box.length().y());
   for (const Preconditioner pre : {Preconditioner::symmetric_gauss_seidel, Preconditioner::block_jacobi}) {
     ResistanceSolverParams params;
@@ -157,7 +125,7 @@ TEST(PairFormStorage, SolveGivesTheDenseSolutionAndStress) {
 }
 
 TEST(PairFormStorage, ResultIsBitIdenticalForAnyThreadCount) {
-  const Dense d = dense_configuration();
+  const test_support::DenseSuspension d = dense_configuration();
   const AmbientFlow flow = AmbientFlow::simple_shear(1.0);
   ResistanceSolverParams params;
   params.storage = CouplingStorage::pair_form;

@@ -19,6 +19,7 @@
 #include "dem/integrate/resistance_solver.hpp"
 #include "dem/neighbour_search.hpp"
 #include "dem/packing.hpp"
+#include "tests/dense_suspension.hpp"
 
 using namespace suspend;
 using std::numbers::pi;
@@ -312,40 +313,9 @@ TEST(ResistanceSolver, ForceFreeEqualSpheresApproachLinearlyInTheGap) {
 
 namespace {
 
-// A bidisperse (a = 1 and 1.4, equal numbers) random packing at phi = 0.5 with random forces and torques.
-struct Dense {
-  std::vector<double> radii{1.0, 1.4};
-  Particles p;
-  Box box;
-  std::vector<ActivePair> pairs;
-  std::vector<Vec3> force, torque;
-};
-
-Dense dense_configuration(std::size_t n, double gap_cutoff) {
-  Dense d;
-  std::vector<int> species(n);
-  std::vector<double> a(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    species[i] = i < n / 2 ? 0 : 1;
-    a[i] = d.radii[species[i]];
-  }
-  d.box = cube_for_volume_fraction(a, 0.5);
-  PackingParams pp;
-  pp.seed = 7;
-  const Packing packing = random_packing(a, d.box, pp);
-  d.p = make_particles(packing.position, species, d.radii);
-  std::vector<NeighbourPair> list;
-  CellListSearch search;
-  search.find_pairs(d.p.position, d.p.radius, d.box, gap_cutoff, list);
-  compact_active_pairs(list, d.p, d.box, gap_cutoff, d.pairs);
-  std::mt19937_64 rng(11);
-  std::normal_distribution<double> g;
-  for (std::size_t i = 0; i < n; ++i) {
-    d.force.emplace_back(g(rng), g(rng), g(rng));
-    d.torque.emplace_back(g(rng), g(rng), g(rng));
-  }
-  return d;
-}
+// A bidisperse random packing at phi = 0.5 with random forces and torques (tests/dense_suspension.hpp).
+using Dense = test_support::DenseSuspension;
+Dense dense_configuration(std::size_t n, double gap_cutoff) { return test_support::dense_suspension(n, gap_cutoff); }
 
 }  // namespace
 
