@@ -9,7 +9,8 @@
 //       reads FILE, runs STEPS full steps (default 5) with INTEGRATOR = overdamped (default: the resistance solve)
 //       or inertial (paper 000 eq. 15 at St = 1e-3, explicit matrix-free hydrodynamics); SURFACE = surface
 //       (default) or none (lubrication + contacts only, the set-up of the first measurements); STORAGE = dense
-//       (default) or pair_form, the resistance matrix's coupling blocks (hydrodynamics.solver.storage). Prints the
+//       (default here), pair_form or auto, the resistance matrix's coupling blocks (hydrodynamics.solver.storage,
+//       whose default is auto). Prints the
 //       resident-set baseline before the particles are read, the peak (VmHWM) at the end, (peak - baseline) / N,
 //       and the bytes held by the main per-pair buffers.
 // Threads: OMP_NUM_THREADS (per-thread scratch is part of the peak).
@@ -62,8 +63,9 @@ int pack(const std::string& file, std::size_t n) {
 int step(const std::string& file, int steps, const std::string& integrator, const std::string& surface,
          const std::string& storage) {
   if ((integrator != "overdamped" && integrator != "inertial") || (surface != "surface" && surface != "none") ||
-      (storage != "dense" && storage != "pair_form")) {
-    std::cerr << "INTEGRATOR is overdamped or inertial, SURFACE is surface or none, STORAGE is dense or pair_form\n";
+      (storage != "dense" && storage != "pair_form" && storage != "auto")) {
+    std::cerr << "INTEGRATOR is overdamped or inertial, SURFACE is surface or none, STORAGE is dense, pair_form or "
+                 "auto\n";
     return 2;
   }
   const long baseline = status_kb("VmRSS");
@@ -115,7 +117,8 @@ int step(const std::string& file, int steps, const std::string& integrator, cons
   params.contact = law;
   params.lubrication = true;
   params.resistance.lubrication.outer_cutoff = 0.25;
-  if (storage == "pair_form") params.resistance.storage = CouplingStorage::pair_form;
+  if (storage != "auto")
+    params.resistance.storage = storage == "pair_form" ? CouplingStorage::pair_form : CouplingStorage::dense;
   if (integrator == "inertial") {
     params.integrator = Integrator::inertial;
     params.stokes_number = 1.0e-3;
@@ -132,7 +135,7 @@ int step(const std::string& file, int steps, const std::string& integrator, cons
   std::printf("N %zu, %s%s%s, threads %d, %d steps in %.2f s (dt %.3g); active pairs %zu, list pairs %zu, "
               "contacts %zu, CG its %d\n",
               n, integrator.c_str(), surface == "surface" ? " + surface forces" : "",
-              storage == "pair_form" ? ", pair-form blocks" : "", omp_get_max_threads(), steps,
+              storage == "dense" ? "" : (", " + storage + " blocks").c_str(), omp_get_max_threads(), steps,
               seconds, sim.time_step(), sim.active_pairs().size(), sim.neighbours().pairs().size(),
               sim.contact_count(), sim.solver_iterations());
   std::printf("baseline RSS %ld kB, peak RSS %ld kB, (peak - baseline) / N = %.0f B per particle\n", baseline, peak,
@@ -150,7 +153,7 @@ int step(const std::string& file, int steps, const std::string& integrator, cons
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::cerr << "usage: pairwise_step_memory pack FILE [N] | step FILE [STEPS [overdamped|inertial [surface|none [dense|pair_form]]]]\n";
+    std::cerr << "usage: pairwise_step_memory pack FILE [N] | step FILE [STEPS [overdamped|inertial [surface|none [dense|pair_form|auto]]]]\n";
     return 2;
   }
   const std::string mode = argv[1], file = argv[2];

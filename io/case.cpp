@@ -208,8 +208,9 @@ Case parse_case(const YAML::Node& root, const std::string& source) {
                             : Preconditioner::symmetric_gauss_seidel;
     rs.tolerance = v.number("tolerance", rs.tolerance, Range::open(0.0, 1.0));
     rs.max_iterations = static_cast<int>(v.integer("max_iterations", rs.max_iterations, 1, 1'000'000));
-    rs.storage = v.choice("storage", "dense", {"dense", "pair_form"}) == "pair_form" ? CouplingStorage::pair_form
-                                                                                   : CouplingStorage::dense;
+    const std::string storage = v.choice("storage", "auto", {"auto", "dense", "pair_form"});
+    if (storage != "auto")
+      rs.storage = storage == "pair_form" ? CouplingStorage::pair_form : CouplingStorage::dense;
     v.finish();
     h.finish();
   }
@@ -353,7 +354,7 @@ YAML::Node to_yaml(const Case& c) {
     v["preconditioner"] = rs.preconditioner == Preconditioner::block_jacobi ? "jacobi" : "gauss_seidel";
     v["tolerance"] = number_node(rs.tolerance);
     v["max_iterations"] = rs.max_iterations;
-    v["storage"] = rs.storage == CouplingStorage::pair_form ? "pair_form" : "dense";
+    v["storage"] = !rs.storage ? "auto" : *rs.storage == CouplingStorage::pair_form ? "pair_form" : "dense";
   }
   n["contact"] = contact_to_yaml(c.simulation.contact);
   YAML::Node r = n["run"];

@@ -83,8 +83,9 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
     links[l] = {row_of_[pr.i], row_of_[pr.j]};
     link_pair_[l] = static_cast<std::uint32_t>(k);
   }
-  const bool compact = params_.storage == CouplingStorage::pair_form;
-  matrix_.set_structure(n, params_.storage);
+  storage_ = params_.storage_for(n);
+  const bool compact = storage_ == CouplingStorage::pair_form;
+  matrix_.set_structure(n, storage_);
   const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(links.size());
   if (compact) {
     // Sliding contacts' links get a slip entry (the only blocks with terms along the slip direction).
@@ -365,7 +366,7 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
                                          const ImplicitContacts& implicit) {
   const std::ptrdiff_t np = static_cast<std::ptrdiff_t>(pairs.size());
   // Pair form: the lubrication forces on j are not kept (24 B a pair) but formed again as the stress is summed.
-  const bool compact = params_.storage == CouplingStorage::pair_form;
+  const bool compact = storage_ == CouplingStorage::pair_form;
   if (compact)
     out.lubrication_force_on_j.clear();
   else

@@ -35,6 +35,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -63,10 +64,18 @@ struct ResistanceSolverParams {
   double tolerance = 1e-6;
   int max_iterations = 5000;  // CG iterations before NumericalError
   bool warm_start = true;     // start CG from the previous solution
-  // Coupling blocks of the conjugate gradient: dense 6x6 (default), or pair_form (linalg/pair_form_block.hpp:
-  // n and 6 numbers a link, and the stress's force rows of j as 3 numbers and its strain force), which needs about
-  // 1 KB less per particle at phi = 0.5, for the largest systems. The same solution to the solver's tolerance.
-  CouplingStorage storage = CouplingStorage::dense;
+  // Coupling blocks of the conjugate gradient: dense 6x6, or pair_form (linalg/pair_form_block.hpp: n and 6
+  // numbers a link, the diagonal packed, and the stress's force rows of j as 3 numbers and its strain force), which
+  // needs about 1.2 KB less per particle at phi = 0.5 and is the faster one from about 16384 spheres on (it is 1.5-1.7x
+  // slower in the caches). The same solution to the solver's tolerance. Unset (`auto`): pair_form from
+  // pair_form_from particles on with the conjugate gradient, else dense (docs/performance.md section d).
+  std::optional<CouplingStorage> storage;
+  static constexpr std::size_t pair_form_from = 16384;
+  CouplingStorage storage_for(std::size_t particles) const {
+    if (storage) return *storage;
+    return solver == LinearSolver::conjugate_gradient && particles >= pair_form_from ? CouplingStorage::pair_form
+                                                                                     : CouplingStorage::dense;
+  }
   LubricationStress lubrication_stress = LubricationStress::force_dipole;
   hydro::LubricationParams lubrication;
   // Throws InputError naming the key (hydrodynamics.solver.*, lubrication.*).
@@ -203,6 +212,7 @@ class ResistanceSolver {
   std::vector<ChunkLink> chunk_;
   std::vector<std::int32_t> pair_link_;  // per pair: its link, or -1 (beyond the outer cutoff, CG)
   std::size_t lubricated_ = 0;
+  CouplingStorage storage_ = CouplingStorage::dense;  // params_.storage_for(the particles of the last assembly)
 
   std::vector<std::uint32_t> row_of_, order_scratch_;  // block row of each particle (cell_order.hpp)
   std::vector<std::uint32_t> link_count_;              // links per first row, then their offsets

@@ -187,3 +187,16 @@ TEST(PairFormStorage, NeedsTheConjugateGradient) {
   params.solver = LinearSolver::cholesky;
   EXPECT_THROW(params.validate(), InputError);
 }
+
+TEST(PairFormStorage, AutomaticFromSixteenThousandSpheresWithTheConjugateGradient) {
+  ResistanceSolverParams params;  // storage unset: auto
+  EXPECT_EQ(params.storage_for(16383), CouplingStorage::dense);
+  EXPECT_EQ(params.storage_for(16384), CouplingStorage::pair_form);
+  params.solver = LinearSolver::cholesky;
+  EXPECT_EQ(params.storage_for(100000), CouplingStorage::dense);
+  params.solver = LinearSolver::conjugate_gradient;
+  params.storage = CouplingStorage::dense;
+  EXPECT_EQ(params.storage_for(100000), CouplingStorage::dense);
+  params.storage = CouplingStorage::pair_form;
+  EXPECT_EQ(params.storage_for(10), CouplingStorage::pair_form);
+}
