@@ -48,10 +48,10 @@ class ContactStage {
   // normal), added to its force and record.
   void add_contact_change(std::size_t k, const Vec3& change_on_j) {
     pair_force_[k] += change_on_j;
-    const Vec3 n = active_[k].geometry().n;
-    const Vec3 normal = n.dot(change_on_j) * n;
     const std::int32_t slot = history_slot_[k];  // a pair with a contact stiffness is within the law's range
     if (slot < 0) return;
+    const Vec3 n = active_[k].geometry().n;
+    const Vec3 normal = n.dot(change_on_j) * n;
     records_[slot].normal += normal;
     records_[slot].tangential += change_on_j - normal;
   }

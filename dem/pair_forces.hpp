@@ -76,17 +76,20 @@ class ContactRecords {
   ContactRecords(const std::vector<ContactRecord>& records, const std::vector<std::int32_t>* slot = nullptr)
       : records_(&records), slot_(slot) {}
   ContactRecord operator[](std::size_t k) const {
-    if (!slot_) return (*records_)[k];
-    const std::int32_t s = (*slot_)[k];
-    return s < 0 ? ContactRecord{} : (*records_)[static_cast<std::size_t>(s)];
+    const ContactRecord* r = find(k);
+    return r ? *r : ContactRecord{};
   }
   bool contact(std::size_t k) const {
-    if (!slot_) return (*records_)[k].contact;
-    const std::int32_t s = (*slot_)[k];
-    return s >= 0 && (*records_)[static_cast<std::size_t>(s)].contact;
+    const ContactRecord* r = find(k);
+    return r && r->contact;
   }
 
  private:
+  const ContactRecord* find(std::size_t k) const {
+    if (!slot_) return &(*records_)[k];
+    const std::int32_t s = (*slot_)[k];
+    return s < 0 ? nullptr : &(*records_)[static_cast<std::size_t>(s)];
+  }
   const std::vector<ContactRecord>* records_;
   const std::vector<std::int32_t>* slot_;
 };

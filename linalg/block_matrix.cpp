@@ -146,26 +146,46 @@ void SymmetricBlockMatrix::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y
   }
 }
 
+void SymmetricBlockMatrix::set_diagonal(std::size_t r, const Vector6& values) {
+  if (storage_ == CouplingStorage::pair_form) {
+    PackedSymmetric6& d = packed_diagonal_[r];
+    d.upper.fill(0.0);
+    for (int c = 0; c < 6; ++c) d.upper[PackedSymmetric6::diagonal_index(c)] = values[c];
+  } else {
+    diagonal_[r].setZero();
+    diagonal_[r].diagonal() = values;
+  }
+}
+
+void SymmetricBlockMatrix::add_to_diagonal(std::size_t r, const PackedSymmetric6& block) {
+  if (storage_ == CouplingStorage::pair_form)
+    block.add_to(packed_diagonal_[r]);
+  else
+    block.add_to(diagonal_[r]);
+}
+
+Matrix6 SymmetricBlockMatrix::plain_diagonal(std::size_t r) const {
+  if (storage_ == CouplingStorage::pair_form) {
+    if (!scaled_) return packed_diagonal_[r].unpacked();
+    const Matrix6 l = unpack_lower(packed_diagonal_[r].upper).inverse();
+    return l * l.transpose();
+  }
+  return scaled_ ? Matrix6(diagonal_[r] * diagonal_[r].transpose()) : diagonal_[r];
+}
+
+Matrix6 SymmetricBlockMatrix::plain_coupling(std::size_t k) const {
+  if (storage_ == CouplingStorage::pair_form) return expand(pair_form_[k], slip(k));
+  const BlockLink& l = links_[k];
+  return scaled_ ? Matrix6(diagonal_[l.i] * coupling_[k] * diagonal_[l.j].transpose()) : coupling_[k];
+}
+
 Eigen::MatrixXd SymmetricBlockMatrix::dense() const {
   const std::size_t n = rows_;
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(6 * n, 6 * n);
-  if (storage_ == CouplingStorage::pair_form) {
-    for (std::size_t r = 0; r < n; ++r) {
-      const Matrix6 l = scaled_ ? Matrix6(unpack_lower(packed_diagonal_[r].upper).inverse()) : Matrix6::Zero();
-      a.block<6, 6>(6 * r, 6 * r) = scaled_ ? Matrix6(l * l.transpose()) : packed_diagonal_[r].unpacked();
-    }
-    for (std::size_t k = 0; k < links_.size(); ++k) {
-      const Matrix6 c = expand(pair_form_[k], slip(k));
-      a.block<6, 6>(6 * links_[k].i, 6 * links_[k].j) += c;
-      a.block<6, 6>(6 * links_[k].j, 6 * links_[k].i) += c.transpose();
-    }
-    return a;
-  }
-  for (std::size_t r = 0; r < n; ++r)
-    a.block<6, 6>(6 * r, 6 * r) = scaled_ ? Matrix6(diagonal_[r] * diagonal_[r].transpose()) : diagonal_[r];
+  for (std::size_t r = 0; r < n; ++r) a.block<6, 6>(6 * r, 6 * r) = plain_diagonal(r);
   for (std::size_t k = 0; k < links_.size(); ++k) {
     const BlockLink& l = links_[k];
-    const Matrix6 c = scaled_ ? Matrix6(diagonal_[l.i] * coupling_[k] * diagonal_[l.j].transpose()) : coupling_[k];
+    const Matrix6 c = plain_coupling(k);
     a.block<6, 6>(6 * l.i, 6 * l.j) += c;
     a.block<6, 6>(6 * l.j, 6 * l.i) += c.transpose();
   }

@@ -147,6 +147,12 @@ class SymmetricBlockMatrix {
   const std::vector<Matrix6>& diagonal() const { return diagonal_; }
   std::vector<Matrix6>& coupling() { return coupling_; }
   const std::vector<Matrix6>& coupling() const { return coupling_; }
+  // Assembly of the plain matrix, either storage: diagonal block r set to diag(values), and a symmetric block added.
+  void set_diagonal(std::size_t r, const Vector6& values);
+  void add_to_diagonal(std::size_t r, const PackedSymmetric6& block);
+  // The plain (unscaled) blocks, either storage: diagonal block r and coupling block k (for diagnostics, dense()).
+  Matrix6 plain_diagonal(std::size_t r) const;
+  Matrix6 plain_coupling(std::size_t k) const;
   std::vector<PackedSymmetric6>& packed_diagonal() { return packed_diagonal_; }
   const std::vector<PackedSymmetric6>& packed_diagonal() const { return packed_diagonal_; }
   // Pair form, scaled: G_r v and G_r^T v.

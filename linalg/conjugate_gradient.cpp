@@ -29,6 +29,16 @@ void for_each_block(const SymmetricBlockMatrix& a, const Eigen::VectorXd& in, Ei
     solve(a.diagonal()[i], y.segment<6>(6 * i));
   }
 }
+// One row of a pair-form sweep over the entries [begin, end) of row i: y_i = v_i - G_i sum C_ij hat_j, and
+// hat_i = G_i^T y_i for the rows after it.
+inline void pair_form_sweep_row(const SymmetricBlockMatrix& a, std::size_t i, const Entry* begin, const Entry* end,
+                                const Eigen::VectorXd& v, Eigen::VectorXd& y, Eigen::VectorXd& hat) {
+  Vector6 acc = Vector6::Zero();
+  for (const Entry* e = begin; e != end; ++e) acc += a.pair_form_times(*e, hat);
+  const Vector6 s = v.segment<6>(6 * i) - a.g_times(i, acc);
+  y.segment<6>(6 * i) = s;
+  hat.segment<6>(6 * i) = a.g_transpose_times(i, s);
+}
 }  // namespace
 
 void PreconditionedConjugateGradient::prepare(SymmetricBlockMatrix& a) {
@@ -66,13 +76,7 @@ void PreconditionedConjugateGradient::forward(const SymmetricBlockMatrix& a, con
   const std::size_t n = a.block_rows();
   if (a.storage() == CouplingStorage::pair_form) {  // y_i = v_i - G_i sum_{j<i} C_ij hat_j, hat_i = G_i^T y_i
     hat.resize(v.size());
-    for (std::size_t i = 0; i < n; ++i) {
-      Vector6 acc = Vector6::Zero();
-      for (const Entry* e = a.row_begin(i); e != a.row_diagonal(i); ++e) acc += a.pair_form_times(*e, hat);
-      const Vector6 s = v.segment<6>(6 * i) - a.g_times(i, acc);
-      y.segment<6>(6 * i) = s;
-      hat.segment<6>(6 * i) = a.g_transpose_times(i, s);
-    }
+    for (std::size_t i = 0; i < n; ++i) pair_form_sweep_row(a, i, a.row_begin(i), a.row_diagonal(i), v, y, hat);
     return;
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -87,13 +91,8 @@ void PreconditionedConjugateGradient::backward(const SymmetricBlockMatrix& a, co
                                                Eigen::VectorXd& y, Eigen::VectorXd& hat) const {
   if (a.storage() == CouplingStorage::pair_form) {
     hat.resize(v.size());
-    for (std::size_t i = a.block_rows(); i-- > 0;) {
-      Vector6 acc = Vector6::Zero();
-      for (const Entry* e = a.row_diagonal(i); e != a.row_end(i); ++e) acc += a.pair_form_times(*e, hat);
-      const Vector6 s = v.segment<6>(6 * i) - a.g_times(i, acc);
-      y.segment<6>(6 * i) = s;
-      hat.segment<6>(6 * i) = a.g_transpose_times(i, s);
-    }
+    for (std::size_t i = a.block_rows(); i-- > 0;)
+      pair_form_sweep_row(a, i, a.row_diagonal(i), a.row_end(i), v, y, hat);
     return;
   }
   for (std::size_t i = a.block_rows(); i-- > 0;) {

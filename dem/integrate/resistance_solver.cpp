@@ -83,9 +83,8 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
     links[l] = {row_of_[pr.i], row_of_[pr.j]};
     link_pair_[l] = static_cast<std::uint32_t>(k);
   }
-  storage_ = params_.storage_for(n);
-  const bool compact = storage_ == CouplingStorage::pair_form;
-  matrix_.set_structure(n, storage_);
+  matrix_.set_structure(n, params_.storage_for(n));
+  const bool compact = matrix_.storage() == CouplingStorage::pair_form;
   const std::ptrdiff_t nl = static_cast<std::ptrdiff_t>(links.size());
   if (compact) {
     // Sliding contacts' links get a slip entry (the only blocks with terms along the slip direction).
@@ -110,15 +109,9 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
     const double a = p.radius[i];
     const hydro::StokesResistance s = hydro::stokes_resistance(a);
     const std::ptrdiff_t r = row_of_[i];
-    if (compact) {
-      PackedSymmetric6& d = matrix_.packed_diagonal()[r];
-      d.upper.fill(0.0);
-      for (int c = 0; c < 6; ++c) d.upper[PackedSymmetric6::diagonal_index(c)] = c < 3 ? s.translation : s.rotation;
-    } else {
-      Matrix6& d = matrix_.diagonal()[r];
-      d.setZero();
-      d.diagonal() << s.translation, s.translation, s.translation, s.rotation, s.rotation, s.rotation;
-    }
+    Vector6 drag;
+    drag << s.translation, s.translation, s.translation, s.rotation, s.rotation, s.rotation;
+    matrix_.set_diagonal(static_cast<std::size_t>(r), drag);
     rhs_.segment<3>(6 * r) = force[i] + s.translation * (a * a / 6.0) * flow.velocity_laplacian(p.position[i]);
     rhs_.segment<3>(6 * r + 3) = torque[i];
   }
@@ -141,7 +134,8 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
       hydro::Vector12 strain = lub.strain_forces(pr.geometry().n, gap, flow.strain_rate(p.position[pr.i]),
                                                  flow.strain_rate(p.position[pr.j]));
       if (stiff(implicit, k)) {  // backward-Euler contact terms (implicit_contacts.hpp)
-        const ContactStep cs = contact_step(pr.geometry(), p.position[pr.i], (*implicit.stiffness)[k], implicit.dt, flow);
+        const ContactStep cs =
+            contact_step(pr.geometry(), p.position[pr.i], (*implicit.stiffness)[k], implicit.dt, flow);
         r += cs.resistance();
         strain += cs.ambient_force();
       }
@@ -171,13 +165,8 @@ void ResistanceSolver::assemble(const Particles& p, const std::vector<int>& spec
     }
     for (std::ptrdiff_t c = 0; c < count; ++c) {
       const BlockLink& link = links[start + c];
-      if (compact) {
-        chunk_[c].self_i.add_to(matrix_.packed_diagonal()[link.i]);
-        chunk_[c].self_j.add_to(matrix_.packed_diagonal()[link.j]);
-      } else {
-        chunk_[c].self_i.add_to(matrix_.diagonal()[link.i]);
-        chunk_[c].self_j.add_to(matrix_.diagonal()[link.j]);
-      }
+      matrix_.add_to_diagonal(link.i, chunk_[c].self_i);
+      matrix_.add_to_diagonal(link.j, chunk_[c].self_j);
       rhs_.segment<6>(6 * static_cast<Eigen::Index>(link.i)) += chunk_[c].strain.segment<6>(0);
       rhs_.segment<6>(6 * static_cast<Eigen::Index>(link.j)) += chunk_[c].strain.segment<6>(6);
     }
@@ -336,12 +325,9 @@ double ResistanceSolver::relaxation_rate(const std::vector<double>& mass, const 
   double rate = 0.0;
   for (std::size_t i = 0; i < matrix_.block_rows(); ++i) {  // particle i, row r
     const std::size_t r = row_of_[i];
-    const bool compact = matrix_.storage() == CouplingStorage::pair_form;  // the matrix of explicit_forces: plain
-    Vector6 row = (compact ? matrix_.packed_diagonal()[r].unpacked() : matrix_.diagonal()[r]).cwiseAbs().rowwise().sum();
+    Vector6 row = matrix_.plain_diagonal(r).cwiseAbs().rowwise().sum();
     for (const auto* e = matrix_.row_begin(r); e != matrix_.row_end(r); ++e) {
-      const Matrix6 c = matrix_.storage() == CouplingStorage::pair_form
-                            ? expand(matrix_.pair_form()[e->link], matrix_.slip(e->link))
-                            : matrix_.coupling()[e->link];
+      const Matrix6 c = matrix_.plain_coupling(e->link);
       row += e->transposed ? Vector6(c.transpose().cwiseAbs().rowwise().sum()) : Vector6(c.cwiseAbs().rowwise().sum());
     }
     rate = std::max({rate, row.head<3>().maxCoeff() / mass[i], row.tail<3>().maxCoeff() / moment[i]});
@@ -366,7 +352,7 @@ void ResistanceSolver::accumulate_stress(const Particles& p, const std::vector<i
                                          const ImplicitContacts& implicit) {
   const std::ptrdiff_t np = static_cast<std::ptrdiff_t>(pairs.size());
   // Pair form: the lubrication forces on j are not kept (24 B a pair) but formed again as the stress is summed.
-  const bool compact = storage_ == CouplingStorage::pair_form;
+  const bool compact = matrix_.storage() == CouplingStorage::pair_form;
   if (compact)
     out.lubrication_force_on_j.clear();
   else

@@ -212,7 +212,6 @@ class ResistanceSolver {
   std::vector<ChunkLink> chunk_;
   std::vector<std::int32_t> pair_link_;  // per pair: its link, or -1 (beyond the outer cutoff, CG)
   std::size_t lubricated_ = 0;
-  CouplingStorage storage_ = CouplingStorage::dense;  // params_.storage_for(the particles of the last assembly)
 
   std::vector<std::uint32_t> row_of_, order_scratch_;  // block row of each particle (cell_order.hpp)
   std::vector<std::uint32_t> link_count_;              // links per first row, then their offsets
