@@ -53,7 +53,7 @@ namespace suspend::coupling {
 
 struct KrylovParams {
   double tolerance = 1e-4;   // relative residual (contract above)
-  int max_iterations = 200;  // GMRES iterations (one Stokes solve each) before NumericalError
+  int max_iterations = 1000;  // GMRES iterations (one Stokes solve each) before NumericalError
   bool warm_start = true;
   bool extrapolate = true;   // warm start from the linear extrapolation of the last two solutions
   double preconditioner_cutoff = 2.2;  // s' below which a pair's correction enters the near-field preconditioner
