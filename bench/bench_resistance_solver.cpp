@@ -4,6 +4,7 @@
 //   cold:     CG from zero;
 //   warm:     CG from the solution of the previous step (particles advanced by dt = 1/1400 with the solved
 //             velocities, the pair list kept, as between two neighbour-list rebuilds);
+//   storage: cold CG with the coupling blocks dense and in pair form, N = 500, 2000, 8000;
 //   warm block Jacobi: the same with the block-Jacobi preconditioner instead of symmetric Gauss-Seidel;
 //   assembly and stress: a solve whose warm start is already the solution (0 iterations);
 //   cholesky: sparse Cholesky with the symbolic analysis reused (same pattern), and with a fresh analysis.
@@ -107,6 +108,23 @@ void BM_ConjugateGradientWarm(benchmark::State& state) {
   report(state, c, out);
 }
 
+// Cold CG (many iterations, so the time is that of the iterations) with the coupling blocks stored dense (arg 0)
+// or in pair form (1): the cost per iteration of the two storages as the system outgrows the caches.
+void BM_ConjugateGradientStorage(benchmark::State& state) {
+  const Configuration& c = configuration(static_cast<std::size_t>(state.range(0)));
+  ResistanceSolverParams params;
+  params.warm_start = false;
+  params.storage = state.range(1) == 0 ? CouplingStorage::dense : CouplingStorage::pair_form;
+  ResistanceSolver solver(c.species_radius, params);
+  SolveResult out;
+  const AmbientFlow unit_shear = AmbientFlow::simple_shear(1.0);
+  for (auto _ : state) solver.solve(c.current.p, c.current.pairs, unit_shear, c.force, c.torque, out);
+  report(state, c, out);
+  state.counters["us_per_iteration_and_particle"] = benchmark::Counter(
+      out.iterations * static_cast<double>(c.current.p.size()) * 1e-6,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 void BM_ConjugateGradientWarmBlockJacobi(benchmark::State& state) {
   const Configuration& c = configuration(static_cast<std::size_t>(state.range(0)));
   ResistanceSolverParams params;
@@ -179,6 +197,9 @@ void BM_MatrixVectorProduct(benchmark::State& state) {
 BENCHMARK(BM_MatrixVectorProduct)->Arg(500)->Arg(4000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ConjugateGradientCold)->Arg(500)->Arg(4000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ConjugateGradientWarm)->Arg(500)->Arg(4000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ConjugateGradientStorage)
+    ->ArgsProduct({{500, 2000, 8000}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ConjugateGradientWarmBlockJacobi)->Arg(500)->Arg(4000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_AssemblyAndStress)->Arg(500)->Arg(4000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CholeskyPatternReused)->Arg(500)->Arg(4000)->Unit(benchmark::kMillisecond);

@@ -5,17 +5,21 @@
 # after the other REPEAT times; per repetition it prints the CPU seconds per unit strain, steps per unit strain and
 # linear-solver iterations per step of each size and their ratio N = 2000 / N = 500 (an O(N) engine shows 4 for
 # the CPU), then the median CPU ratio. On a shared machine whose speed drifts by 10-20% within minutes, the
-# interleaved repetitions and their median are what make the ratio reproducible.
+# interleaved repetitions and their median are what make the ratio reproducible. MODE `together` runs the two sizes
+# at the same time instead, one on each core: the large run once, the small one over and over until the large one
+# has ended, and the ratio is the large run's CPU against the mean of the small runs', so both see the same minutes
+# of the machine (which drifts by tens of per cent: docs/performance.md section f).
 # usage: bench/size_scaling.sh SUSPEND [PHI (default 0.50)] [STRAIN (default 1)] [SMALL LARGE (default 500 2000)]
-#        [REPEAT (default 3)]
+#        [REPEAT (default 3)] [MODE: alternate (default) | together]
 set -euo pipefail
 if [[ ${1:-} == -h || ${1:-} == --help || $# -lt 1 ]]; then
   awk 'NR > 1 && !/^#/ {exit} NR > 1 {sub(/^# ?/, ""); print}' "$0"
   [[ $# -ge 1 ]] && exit 0 || exit 2
 fi
 root=$(cd "$(dirname "$0")/.." && pwd)
-bin=$1 phi=${2:-0.50} strain=${3:-1} small=${4:-500} large=${5:-2000} repeat=${6:-3}
+bin=$1 phi=${2:-0.50} strain=${3:-1} small=${4:-500} large=${5:-2000} repeat=${6:-3} mode=${7:-alternate}
 [[ -x $bin ]] || { echo "error: $bin is not an executable suspend" >&2; exit 2; }
+[[ $mode == alternate || $mode == together ]] || { echo "error: MODE is alternate or together, not $mode" >&2; exit 2; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive HDF5_USE_FILE_LOCKING=FALSE
@@ -28,9 +32,9 @@ done
 measure() {  # prints CPU s / strain, steps / strain, iterations / step of one run of N = $1
   rm -rf "$work/run$1"
   # shellcheck disable=SC2046
-  /usr/bin/time -f "%U %S" -o "$work/time" "$bin" run "$file" $(sets "$1") --out "$work/run$1" \
+  /usr/bin/time -f "%U %S" -o "$work/time$1" "$bin" run "$file" $(sets "$1") --out "$work/run$1" \
     --set "particles.initial={from: file, file: $work/pack$1/run.h5}" --set run.strain="$strain" > /dev/null
-  /usr/bin/python3 - "$work/run$1/run.h5" "$work/time" <<'PY'
+  /usr/bin/python3 - "$work/run$1/run.h5" "$work/time$1" <<'PY'
 import sys
 import h5py
 import numpy as np
@@ -44,8 +48,21 @@ PY
 ratios=()
 printf "%4s %6s %12s %12s %10s\n" rep N "CPU s/strain" steps/strain "its/step"
 for ((r = 1; r <= repeat; ++r)); do
-  read -r c1 s1 i1 < <(measure "$small")
-  read -r c2 s2 i2 < <(measure "$large")
+  if [[ $mode == together ]]; then
+    measure "$large" > "$work/large" &
+    large_pid=$!
+    : > "$work/small"
+    measure "$small" >> "$work/small"
+    while kill -0 "$large_pid" 2> /dev/null; do measure "$small" >> "$work/small"; done
+    wait "$large_pid"
+    read -r c2 s2 i2 < "$work/large"
+    # the mean over the small runs (their steps and iterations are the same every time: deterministic)
+    read -r c1 s1 i1 < <(awk '{c += $1; s = $2; i = $3; n++} END {printf "%.3f %s %s\n", c / n, s, i}' "$work/small")
+    echo "     ($(wc -l < "$work/small") runs of N = $small beside the one of N = $large)"
+  else
+    read -r c1 s1 i1 < <(measure "$small")
+    read -r c2 s2 i2 < <(measure "$large")
+  fi
   printf "%4s %6s %12s %12s %10s\n" "$r" "$small" "$c1" "$s1" "$i1"
   printf "%4s %6s %12s %12s %10s\n" "$r" "$large" "$c2" "$s2" "$i2"
   ratio=$(/usr/bin/python3 -c "print(f'{$c2 / $c1:.2f}')")

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unistd.h>
 
 #include "core/error.hpp"
 
@@ -19,6 +20,24 @@ inline void subtract(const Entry& e, const std::vector<Matrix6>& blocks, const E
     acc.noalias() -= blocks[e.link].transpose() * xc;
   else
     acc.noalias() -= blocks[e.link] * xc;
+}
+// Fetches the coupling blocks of the entries [begin, end) towards the cache ahead of their use (a block is 288 B,
+// five lines; a sweep reads them in row order, which is not their storage order, so the hardware does not). Pays
+// only when the blocks do not fit the core's L2 cache: frictionless phi 0.50, one thread, two binaries side by side,
+// N = 2000 (1.7 MB of blocks) 5-7% faster per strain, N = 500 (0.45 MB) 4-8% slower (docs/performance.md f).
+inline void prefetch_blocks(const Entry* begin, const Entry* end, const std::vector<Matrix6>& blocks) {
+  for (const Entry* e = begin; e != end; ++e) {
+    const char* p = reinterpret_cast<const char*>(&blocks[e->link]);
+    for (std::size_t line = 0; line < sizeof(Matrix6); line += 64) __builtin_prefetch(p + line);
+  }
+}
+constexpr std::size_t prefetch_rows_ahead = 2;
+bool blocks_outgrow_cache(const SymmetricBlockMatrix& a) {
+  static const std::size_t l2 = [] {
+    const long bytes = sysconf(_SC_LEVEL2_CACHE_SIZE);
+    return bytes > 0 ? static_cast<std::size_t>(bytes) : std::size_t{512} << 10;
+  }();
+  return a.links() * sizeof(Matrix6) > l2;
 }
 // y_i = in_i, then solve(L_i, y_i), for every block row i (L_i: the factor a holds in scaled form).
 template <class Solve>
@@ -79,7 +98,12 @@ void PreconditionedConjugateGradient::forward(const SymmetricBlockMatrix& a, con
     for (std::size_t i = 0; i < n; ++i) pair_form_sweep_row(a, i, a.row_begin(i), a.row_diagonal(i), v, y, hat);
     return;
   }
+  const bool prefetch = blocks_outgrow_cache(a);
   for (std::size_t i = 0; i < n; ++i) {
+    if (prefetch && i + prefetch_rows_ahead < n) {
+      const std::size_t k = i + prefetch_rows_ahead;
+      prefetch_blocks(a.row_begin(k), a.row_diagonal(k), a.coupling());
+    }
     Vector6 s = v.segment<6>(6 * i);
     for (const Entry* e = a.row_begin(i); e != a.row_diagonal(i); ++e) subtract(*e, a.coupling(), y, s);
     y.segment<6>(6 * i) = s;
@@ -95,7 +119,12 @@ void PreconditionedConjugateGradient::backward(const SymmetricBlockMatrix& a, co
       pair_form_sweep_row(a, i, a.row_diagonal(i), a.row_end(i), v, y, hat);
     return;
   }
+  const bool prefetch = blocks_outgrow_cache(a);
   for (std::size_t i = a.block_rows(); i-- > 0;) {
+    if (prefetch && i >= prefetch_rows_ahead) {
+      const std::size_t k = i - prefetch_rows_ahead;
+      prefetch_blocks(a.row_diagonal(k), a.row_end(k), a.coupling());
+    }
     Vector6 s = v.segment<6>(6 * i);
     for (const Entry* e = a.row_diagonal(i); e != a.row_end(i); ++e) subtract(*e, a.coupling(), y, s);
     y.segment<6>(6 * i) = s;
