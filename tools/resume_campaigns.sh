@@ -14,7 +14,8 @@
 # each case run by the current engine, set against the same campaigns run by the engine before issue 35,
 # runs/step_*_before with a binary built at 2fbb67f, and runs/step_particles: the former step rule with the current
 # contact step; runs/step_reference: the adhesive case with every step bound halved, implicit and explicit springs,
-# the converged reference the first ensembles showed is needed; runs/step_frictionless_diagnostic: what moves the
+# the converged reference the first ensembles showed is needed, first in the queue: packings 6-10 pair it with
+# all ten of the default; runs/step_frictionless_diagnostic: what moves the
 # frictionless case's contacts per particle; docs/performance.md section f). A campaign folder that a new machine lacks is first rebuilt
 # from the committed table where there is one (tools/restore_campaign.py), so only unfinished points run (a finished
 # campaign costs nothing). The binary is copied to RUNS/bin/suspend-campaign, so that rebuilding build/ meanwhile
@@ -58,6 +59,7 @@ else
 fi
 # name | campaign file | committed table
 campaigns=(
+  "step_reference|$root/cases/validation/step_control_ensemble_reference.yaml|$root/results/step_control/adhesive_reference/campaign.json"
   "pairwise_boundary|$root/cases/phim/pairwise_boundary.yaml|$root/results/phim/pairwise_boundary/campaign.json"
   "fcm_seed_scatter|$root/cases/phim/fcm_seed_scatter.yaml|$root/results/phim/fcm_seed_scatter/campaign.json"
   "pairwise_boundary_low_friction|$root/cases/phim/pairwise_boundary_low_friction.yaml|$root/results/phim/pairwise_boundary_low_friction/campaign.json"
@@ -74,7 +76,6 @@ campaigns=(
   "step_frictionless|$root/cases/validation/step_control_ensemble_frictionless.yaml|$root/results/step_control/frictionless_after/campaign.json"
   "step_ensemble|$root/cases/validation/step_control_ensemble.yaml|$root/results/step_control/adhesive_after/campaign.json"
   "step_particles|$root/cases/validation/step_control_ensemble_particles.yaml|$root/results/step_control/adhesive_particles/campaign.json"
-  "step_reference|$root/cases/validation/step_control_ensemble_reference.yaml|$root/results/step_control/adhesive_reference/campaign.json"
   "step_frictionless_diagnostic|$root/cases/validation/step_control_ensemble_frictionless_diagnostic.yaml|$root/results/step_control/frictionless_diagnostic/campaign.json"
 )
 before=()
