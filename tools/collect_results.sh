@@ -30,9 +30,10 @@ for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise
   out="$root/results/phim/$method"
   [ -f "$runs/$name/campaign.json" ] && copy_table "$runs/$name" "$out"
   [ -f "$out/campaign.json" ] || continue
-  if [ "$method" = pairwise_yield_stress ]; then  # a search in sigma* at fixed phi: against the boundary (singular)
+  if [ "$method" = pairwise_yield_stress ]; then  # a search in sigma* at fixed phi: against the exact-field boundaries
     (cd "$root" && /usr/bin/python3 tools/yield_vs_boundary.py results/phim/pairwise_yield_stress \
-      results/phim/pairwise_boundary > results/phim/pairwise_yield_stress/against_boundary.txt) || true
+      results/phim/pairwise_boundary_exact results/phim/pairwise_boundary_exact_others \
+      > results/phim/pairwise_yield_stress/against_boundary.txt) || true
     continue
   fi
   if [ "$method" = fcm_seed_scatter ]; then  # a seed study, not a phi_m campaign
