@@ -31,8 +31,11 @@ for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise
   [ -f "$runs/$name/campaign.json" ] && copy_table "$runs/$name" "$out"
   [ -f "$out/campaign.json" ] || continue
   if [ "$method" = pairwise_yield_stress ]; then  # a search in sigma* at fixed phi: against the exact-field boundaries
-    (cd "$root" && /usr/bin/python3 tools/yield_vs_boundary.py results/phim/pairwise_yield_stress \
-      results/phim/pairwise_boundary_exact results/phim/pairwise_boundary_exact_others \
+    boundaries=()
+    for b in pairwise_boundary_exact pairwise_boundary_exact_others; do
+      [ -f "$root/results/phim/$b/phim.json" ] && boundaries+=("results/phim/$b")
+    done
+    (cd "$root" && /usr/bin/python3 tools/yield_vs_boundary.py results/phim/pairwise_yield_stress "${boundaries[@]}" \
       > results/phim/pairwise_yield_stress/against_boundary.txt) || true
     continue
   fi
