@@ -1,5 +1,6 @@
 // Running the `suspend` program from a test as a user would: spawn it, wait for its exit code, read what it said.
 #pragma once
+#include "tests/scratch_dir.hpp"
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
@@ -22,12 +23,9 @@ namespace suspend::test {
 namespace fs = std::filesystem;
 inline const std::string suspend_bin = SUSPEND_BINARY_DIR "/bin/suspend";
 
-// Per-process scratch space: several builds (Release, sanitizers) may run this test at the same time.
-inline std::string scratch() {
-  const std::string d = ::testing::TempDir() + "/suspend_cli_" + std::to_string(getpid());
-  fs::create_directories(d);
-  return d;
-}
+// Per-process scratch space, removed when the program ends: several builds (Release, sanitizers) may run this
+// test at the same time.
+inline std::string scratch() { return suspend::testing_support::scratch_dir(); }
 inline pid_t spawn(std::vector<std::string> args, const std::string& err_file, bool own_group = false,
                    const std::string& out_file = "/dev/null", const std::string& program = suspend_bin) {
   args.insert(args.begin(), program);

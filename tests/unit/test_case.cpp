@@ -1,4 +1,5 @@
 // Case validation: every kind of bad input gives one clear InputError naming the key, the value and what is allowed.
+#include "tests/scratch_dir.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -206,7 +207,7 @@ TEST(Case, UnreachableVolumeFractionForTheBox) {
 }
 
 TEST(Case, ParticleTableFileErrorsNameTheLine) {
-  const std::string path = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_bad_table.txt";
+  const std::string path = suspend::testing_support::scratch_dir() + "/bad_table.txt";
   std::ofstream(path) << "# x y z a\n1 2 3 1\n4 5 six 1\n";
   try {
     read_particle_table(path);
@@ -228,7 +229,7 @@ TEST(Case, ParticleTableFileErrorsNameTheLine) {
 }
 
 TEST(Case, ParticleCountThatDisagreesWithTheFileIsRefused) {
-  const std::string path = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_two.txt";
+  const std::string path = suspend::testing_support::scratch_dir() + "/two.txt";
   std::ofstream(path) << "2 2 2 1\n6 6 6 1\n";
   const std::string e = configuration_error_of({"particles.initial={from: file, file: " + path + "}", "particles.count=3"});
   EXPECT_NE(e.find("particles.count: 3 disagrees with the 2 particles"), std::string::npos)

@@ -2,6 +2,7 @@
 // other parameter is recomputed and replaced, never used), and what is read back equals what was computed.
 // Small coarse table (L = 6 (a_i + a_j), h = 0.75, three gaps) so that the test is fast; the values themselves
 // are checked against the exact two-sphere functions in tests/validation/test_coupling_two_spheres.cpp.
+#include "tests/scratch_dir.hpp"
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -13,7 +14,7 @@ using namespace suspend;
 using namespace suspend::coupling;
 
 TEST(CouplingPairTableCache, ReusedOnlyWithTheSameParameters) {
-  const std::string dir = (std::filesystem::temp_directory_path() / "suspend_test_coupling_cache").string();
+  const std::string dir = suspend::testing_support::scratch_dir() + "/coupling_cache";
   std::filesystem::remove_all(dir);
   FcmPairTableParams p;
   p.grid_spacing = 0.75;

@@ -1,4 +1,5 @@
 // run.h5 round trip, truncation on restart, checkpoint round trip and refusal, and the XDMF references.
+#include "tests/scratch_dir.hpp"
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -54,7 +55,7 @@ Checkpoint small_checkpoint(std::size_t particles, const std::string& fingerprin
   return c;
 }
 std::string temp(const std::string& name) {
-  const std::string p = ::testing::TempDir() + "/" + std::to_string(getpid()) + "_" + name;
+  const std::string p = suspend::testing_support::scratch_dir() + "/" + name;
   std::filesystem::remove(p);
   return p;
 }
