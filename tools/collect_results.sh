@@ -4,7 +4,8 @@
 # field, FCM at mu_s 0.3 and 1 and at the low frictions, the 20 a_1 box, sigma* 0.5 and 0.3); issue
 # 40's normal-stress ensembles to results/normal_stress_functions/ and results/normal_stress_frictional/), fits them with `suspend phim` (all points, and phi >= 0.45 only as paper 004 does
 # for mu_s <= 0.1: METHOD/from_phi0.45/) and redraws the figures, so the committed results follow the campaigns as
-# they fill; a table already committed is fitted again with the current `suspend phim`.
+# they fill; a table already committed is fitted again with the current `suspend phim`; issue 35's step ensembles of
+# case (a) to results/step_control/.
 # usage: tools/collect_results.sh [RUNS_DIR=runs] [SUSPEND=build/bin/suspend]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -88,4 +89,15 @@ if [ -f "$runs/normal_stress_frictional/campaign.json" ]; then
   copy_table "$runs/normal_stress_frictional" "$out"
   /usr/bin/python3 "$root/tools/ensemble_means.py" "$out/campaign.json" particles.phi > "$out/ensemble_means.txt" 2>&1 \
     || true
+fi
+# Issue 35's step ensembles of case (a): the halved-step reference and each bound halved alone, against the default.
+for entry in "step_reference|adhesive_reference" "step_bounds|adhesive_bounds"; do
+  IFS='|' read -r name folder <<< "$entry"
+  [ -f "$runs/$name/campaign.json" ] && copy_table "$runs/$name" "$root/results/step_control/$folder"
+done
+if [ -f "$root/results/step_control/adhesive_bounds/campaign.json" ]; then
+  for key in run.time_step.max_displacement run.time_step.gap_change; do  # each halved bound against default, reference
+    (cd "$root/results/step_control" && /usr/bin/python3 ../../tools/ensemble_means.py adhesive_bounds/campaign.json \
+      adhesive_after/campaign.json adhesive_reference/campaign.json "$key" --where contact.mu_s=0.5 2>&1) || true
+  done > "$root/results/step_control/adhesive_bounds/ensemble_means.txt"
 fi

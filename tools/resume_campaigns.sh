@@ -15,7 +15,7 @@
 # runs/step_*_before with a binary built at 2fbb67f, and runs/step_particles: the former step rule with the current
 # contact step; runs/step_reference: the adhesive case with every step bound halved, implicit and explicit springs,
 # the converged reference the first ensembles showed is needed, first in the queue: packings 6-10 pair it with
-# all ten of the default; runs/step_frictionless_diagnostic: what moves the
+# all ten of the default, then runs/step_bounds: each of its two bounds halved alone; runs/step_frictionless_diagnostic: what moves the
 # frictionless case's contacts per particle; docs/performance.md section f). A campaign folder that a new machine lacks is first rebuilt
 # from the committed table where there is one (tools/restore_campaign.py), so only unfinished points run (a finished
 # campaign costs nothing). The binary is copied to RUNS/bin/suspend-campaign, so that rebuilding build/ meanwhile
@@ -60,6 +60,7 @@ fi
 # name | campaign file | committed table
 campaigns=(
   "step_reference|$root/cases/validation/step_control_ensemble_reference.yaml|$root/results/step_control/adhesive_reference/campaign.json"
+  "step_bounds|$root/cases/validation/step_control_ensemble_bounds.yaml|$root/results/step_control/adhesive_bounds/campaign.json"
   "pairwise_boundary|$root/cases/phim/pairwise_boundary.yaml|$root/results/phim/pairwise_boundary/campaign.json"
   "fcm_seed_scatter|$root/cases/phim/fcm_seed_scatter.yaml|$root/results/phim/fcm_seed_scatter/campaign.json"
   "pairwise_boundary_low_friction|$root/cases/phim/pairwise_boundary_low_friction.yaml|$root/results/phim/pairwise_boundary_low_friction/campaign.json"
