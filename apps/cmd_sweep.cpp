@@ -70,6 +70,7 @@ void add_sweep_command(CLI::App& app) {
     io::refuse_foreign_folder(opt->out, io::FolderKind::campaign);
     if (cmd->count("--jobs") == 0) opt->sweep.jobs = std::max(1, omp_get_num_procs() / opt->sweep.threads);
     if (opt->status) {
+      campaign::check_points(c, opt->out);  // a campaign the sweep would refuse is refused here too
       campaign::print_status(c, opt->out, opt->sweep.jobs);
       return;
     }

@@ -96,29 +96,38 @@ struct Job {
 };
 }  // namespace
 
-void check_and_record_points(const Campaign& c, const fs::path& dir) {
+namespace {
+// The points DIR/sweep.json records (an empty object for a new folder), each checked against the campaign.
+nlohmann::ordered_json checked_points(const Campaign& c, const fs::path& dir) {
   const fs::path record = dir / "sweep.json";
   nlohmann::ordered_json known = nlohmann::ordered_json::object();
-  if (fs::exists(record)) {
-    std::ifstream in(record);
-    const nlohmann::ordered_json j = nlohmann::ordered_json::parse(in, nullptr, false);
-    if (j.is_discarded() || !j.contains("points"))
-      throw InputError(record.string() + ": unreadable; it records the campaign this folder was started with");
-    known = j["points"];
-    for (const auto& [name, identity] : known.items()) {
-      const Point* p = c.find(name);
-      if (!p)
-        throw InputError("campaign changed: point " + name + " of " + dir.string() +
-                         " is no longer in the campaign (only adding points is allowed; use another --out)");
-      const std::string changes = io::case_changes(identity.get<std::string>(), p->identity, io::result_identity);
-      if (!changes.empty())
-        throw InputError("campaign changed: point " + name + " now differs in " + changes +
-                         " (only adding points is allowed; use another --out)");
-    }
+  if (!fs::exists(record)) return known;
+  std::ifstream in(record);
+  const nlohmann::ordered_json j = nlohmann::ordered_json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.contains("points"))
+    throw InputError(record.string() + ": unreadable; it records the campaign this folder was started with");
+  known = j["points"];
+  for (const auto& [name, identity] : known.items()) {
+    const Point* p = c.find(name);
+    if (!p)
+      throw InputError("campaign changed: point " + name + " of " + dir.string() +
+                       " is no longer in the campaign (only adding points is allowed; use another --out)");
+    const std::string changes = io::case_changes(identity.get<std::string>(), p->identity, io::result_identity);
+    if (!changes.empty())
+      throw InputError("campaign changed: point " + name + " now differs in " + changes +
+                       " (only adding points is allowed; use another --out)");
   }
+  return known;
+}
+}  // namespace
+
+void check_points(const Campaign& c, const fs::path& dir) { checked_points(c, dir); }
+
+void check_and_record_points(const Campaign& c, const fs::path& dir) {
+  nlohmann::ordered_json known = checked_points(c, dir);
   for (const Point& p : c.points) known[p.name] = p.identity;
   fs::create_directories(dir);
-  io::write_text_atomically(record.string(),
+  io::write_text_atomically((dir / "sweep.json").string(),
                             nlohmann::ordered_json{{"campaign", c.source}, {"points", known}}.dump(1) + "\n");
 }
 

@@ -32,7 +32,9 @@ int run_sweep(const Campaign& c, const SweepOptions& o);
 std::string own_executable();
 
 // Refuses (InputError, naming the point and the keys) a campaign whose points differ from those DIR was started
-// with, other than added points; then records the campaign's points in DIR/sweep.json.
+// with, other than added points; check_points only reads (for --status), check_and_record_points then records the
+// campaign's points in DIR/sweep.json.
+void check_points(const Campaign& c, const std::filesystem::path& dir);
 void check_and_record_points(const Campaign& c, const std::filesystem::path& dir);
 
 }  // namespace suspend::campaign

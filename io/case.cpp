@@ -14,6 +14,7 @@
 #include "dem/integrate/time_step_control.hpp"
 #include "io/contact_case.hpp"
 #include "io/hydrodynamic_models.hpp"
+#include "io/initial_configuration.hpp"
 #include "io/schema_reader.hpp"
 
 namespace suspend::io {
@@ -392,10 +393,20 @@ YAML::Node to_yaml(const Case& c) {
   return n;
 }
 
+namespace {
+// The iteration caps of the linear solvers: when a run gives up, not what it computes (a solve that converges
+// gives the same result under any cap; one that does not stops the run with a numerical failure).
+void remove_solver_caps(YAML::Node& n) {
+  if (n["hydrodynamics"]["fcm"]) n["hydrodynamics"]["fcm"].remove("max_iterations");
+  if (n["hydrodynamics"]["solver"]) n["hydrodynamics"]["solver"].remove("max_iterations");
+}
+}  // namespace
+
 std::string result_identity(const Case& c) {
   YAML::Node n = to_yaml(c);
   n["run"].remove("threads");  // how many, not what
   if (n["hydrodynamics"]["fcm"]) n["hydrodynamics"]["fcm"].remove("cache_dir");  // where, not what
+  remove_solver_caps(n);
   YAML::Emitter e;
   e << n;
   return e.c_str();
@@ -410,6 +421,7 @@ std::string physics_fingerprint(const Case& c) {
   n["run"].remove("jammed");  // when to give up, not what is simulated
   n.remove("title");
   if (n["hydrodynamics"]["fcm"]) n["hydrodynamics"]["fcm"].remove("cache_dir");  // where, not what
+  remove_solver_caps(n);
   YAML::Emitter e;
   e << n;
   return e.c_str();
@@ -482,11 +494,32 @@ YAML::Node with_former_defaults(YAML::Node recorded) {
 }
 }  // namespace
 
+namespace {
+// run.time_step.fastest_of acts through the rank k = N / fastest_of (at least 1; 1 for 0) of the particle and pair
+// the motion bounds apply to (bound_rank): two values of the same rank for the case's N give the same steps bit for
+// bit, e.g. 0 (the rule recorded before 2026-12-07) and the default 500 below 1000 particles. The recorded value
+// takes the present one's then. N is that of a random packing of the case (composition_of); a case whose count
+// cannot be formed so keeps its recorded value.
+void same_rank_fastest_of(Case& recorded, const std::string& now) {
+  try {
+    const Case present = parse_case(YAML::Load(now), "the present case");
+    int& old_value = recorded.simulation.time_step.fastest_of;
+    const int new_value = present.simulation.time_step.fastest_of;
+    if (old_value == new_value) return;
+    const std::size_t n = composition_of(present).radius.size();
+    if (bound_rank(n, old_value) == bound_rank(n, new_value)) old_value = new_value;
+  } catch (const std::exception&) {
+  }
+}
+}  // namespace
+
 std::string case_changes(const std::string& recorded, const std::string& now, std::string (*resolve)(const Case&)) {
   if (recorded == now) return "";
   std::string again;
   try {
-    again = resolve(parse_case(with_former_defaults(YAML::Load(recorded)), "the recorded case"));
+    Case old = parse_case(with_former_defaults(YAML::Load(recorded)), "the recorded case");
+    same_rank_fastest_of(old, now);
+    again = resolve(old);
   } catch (const std::exception&) {
     try {
       return yaml_differences(recorded, now);

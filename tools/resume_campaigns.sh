@@ -25,7 +25,8 @@
 # results/exact_relative_check, results/multirate_stress) ran before issue 35's step and contact changes and are
 # finished or superseded by the boundary campaigns; their committed tables are the record. Their few unfinished
 # points are not resumed: run now they would mix the current step with the former one in one table.
-# Logs: RUNS/NAME.log; stop with `pkill -f suspend-campaign`.
+# Logs: RUNS/NAME.log; stop with `pkill -f suspend-campaign`. A campaign whose folder would refuse its file (changed
+# other than by added points) is named in a warning before the queue starts.
 # The same campaigns run by the engine before issue 35 (runs/step_*_before) need a binary built at 2fbb67f: set
 # SUSPEND_BEFORE to it (e.g. `git worktree add /tmp/base 2fbb67f && bash /tmp/base/scripts/build.sh /tmp/base/build`)
 # and they are resumed first (their committed tables: results/step_control/*_before).
@@ -98,6 +99,15 @@ for entry in "${before[@]}" "${campaigns[@]}"; do
   queue+=("$name|$file|$binary")
 done
 export OMP_WAIT_POLICY=passive HDF5_USE_FILE_LOCKING=FALSE
+# A campaign its folder would refuse (a changed campaign file: `sweep` allows only added points) is said now, not
+# found later in its log after the queue has passed it.
+for entry in "${queue[@]}"; do
+  IFS='|' read -r name file binary <<< "$entry"
+  [[ -d $runs/$name ]] || continue
+  if ! problem=$("$binary" sweep "$file" --out "$runs/$name" --status 2>&1 > /dev/null); then
+    echo "warning: $name will be skipped: ${problem#error: }" >&2
+  fi
+done
 (
   for entry in "${queue[@]}"; do
     IFS='|' read -r name file binary <<< "$entry"

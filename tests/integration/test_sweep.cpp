@@ -1,6 +1,6 @@
 // `suspend sweep` as users run it: a campaign gives the same table run with two jobs, after SIGKILL of the sweep
 // and its runs followed by the same command (the killed point's wall time kept up to its last checkpoint), and
-// point by point as a scheduler would run it; a changed campaign is refused naming the key; a stress-controlled
+// point by point as a scheduler would run it; a changed campaign is refused naming the key (by --status too); a stress-controlled
 // point that stops flowing ends as `jammed`; a point over its wall-clock budget is `failed` and kept until
 // --retry-failed; --status reads a finished and a half-finished sweep.
 #include <gtest/gtest.h>
@@ -334,6 +334,11 @@ TEST(Sweep, ChangedCampaignIsRefusedAddedPointsRun) {
       "c3.yaml", "case: " + restart_case + "\nset: {run.strain: " + strain + ", particles.count: 60, run.seed: 9}\n"
                  "vary:\n  particles.phi: [0.40, 0.45]\npoints:\n  - {particles.phi: 0.5, contact.mu: 0.5}\n");
   expect_input_error({"sweep", seed, "--out", dir}, "run.seed 3 -> 9", "");
+  // --status refuses what the sweep would, so that a changed campaign is caught before a queue of sweeps runs
+  // (tools/resume_campaigns.sh), and records nothing.
+  const std::string recorded = read_text(dir + "/sweep.json");
+  expect_input_error({"sweep", seed, "--out", dir, "--status"}, "run.seed 3 -> 9", "");
+  EXPECT_EQ(read_text(dir + "/sweep.json"), recorded);
   // A point recorded by an older version without a key its resolved form has since gained (with the value the old
   // form implied) is the same point, not a changed campaign.
   json record = json::parse(read_text(dir + "/sweep.json"));

@@ -177,6 +177,29 @@ TEST(Case, RecordedCaseChangesIgnoreImpliedKeysAndLastDigits) {
   EXPECT_EQ(case_changes("not: [a case", now, result_identity), "the recorded case is unreadable");
 }
 
+// Two values of run.time_step.fastest_of that give the motion bounds the same rank k = N / fastest_of (at least 1)
+// are the same case: a record from before the quantile rule (no key, meaning 0: the fastest of all) matches today's
+// default 500 below 1000 particles, not above. The linear solvers' iteration caps are no part of a case's identity
+// (they decide when a run gives up, not what it computes).
+TEST(Case, RecordedStepRankAndSolverCapsAreNoChangeWhereTheyGiveTheSameRun) {
+  for (const long count : {100L, 999L, 1000L}) {
+    YAML::Node root = YAML::Load(base);
+    apply_override(root, "particles.count=" + std::to_string(count));
+    const std::string now = result_identity(parse_case(root, ""));
+    YAML::Node old_form = YAML::Load(now);
+    old_form["run"]["time_step"].remove("fastest_of");
+    old_form["hydrodynamics"]["solver"]["max_iterations"] = 200;
+    YAML::Emitter e;
+    e << old_form;
+    const std::string changes = case_changes(e.c_str(), now, result_identity);
+    if (count < 1000)
+      EXPECT_EQ(changes, "") << count;
+    else
+      EXPECT_EQ(changes, "run.time_step.fastest_of 0 -> 500") << count;
+  }
+  EXPECT_EQ(result_identity(parse_case(YAML::Load(base), "")).find("max_iterations"), std::string::npos);
+}
+
 // FCM records written before the fast setting became the default (2026-12-05) lack far_field_every (older still)
 // or predictor (written only when lagged_far_field): they meant every step and the extrapolated start, so a
 // campaign point or checkpoint of such a run still matches a case that sets those values, and differs from one
