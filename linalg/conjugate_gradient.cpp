@@ -24,7 +24,8 @@ inline void subtract(const Entry& e, const std::vector<Matrix6>& blocks, const E
 // Fetches the coupling blocks of the entries [begin, end) towards the cache ahead of their use (a block is 288 B,
 // five lines; a sweep reads them in row order, which is not their storage order, so the hardware does not). Pays
 // only when the blocks do not fit the core's L2 cache: frictionless phi 0.50, one thread, two binaries side by side,
-// N = 2000 (1.7 MB of blocks) 5-7% faster per strain, N = 500 (0.45 MB) 4-8% slower (docs/performance.md f).
+// N = 2000 (1.7 MB of blocks) 6-8% faster per strain, N = 500 (0.45 MB) 4-8% slower (docs/performance.md f).
+// The L2 size is the system's (sysconf), 512 KB where it does not say.
 inline void prefetch_blocks(const Entry* begin, const Entry* end, const std::vector<Matrix6>& blocks) {
   for (const Entry* e = begin; e != end; ++e) {
     const char* p = reinterpret_cast<const char*>(&blocks[e->link]);
