@@ -10,8 +10,10 @@
 
 namespace suspend::testing_support {
 
+inline std::string scratch_path() { return ::testing::TempDir() + "/suspend_test_" + std::to_string(getpid()); }
+
 inline std::string scratch_dir() {
-  const std::string d = ::testing::TempDir() + "/suspend_test_" + std::to_string(getpid());
+  const std::string d = scratch_path();
   std::filesystem::create_directories(d);
   return d;
 }
@@ -20,7 +22,7 @@ class ScratchCleanup : public ::testing::Environment {
  public:
   void TearDown() override {
     std::error_code ignored;
-    std::filesystem::remove_all(::testing::TempDir() + "/suspend_test_" + std::to_string(getpid()), ignored);
+    std::filesystem::remove_all(scratch_path(), ignored);
   }
 };
 

@@ -1,6 +1,5 @@
 // Running the `suspend` program from a test as a user would: spawn it, wait for its exit code, read what it said.
 #pragma once
-#include "tests/scratch_dir.hpp"
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
@@ -15,6 +14,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "tests/scratch_dir.hpp"
 
 extern char** environ;
 

@@ -1,5 +1,4 @@
 // Case validation: every kind of bad input gives one clear InputError naming the key, the value and what is allowed.
-#include "tests/scratch_dir.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -11,6 +10,7 @@
 #include "io/case.hpp"
 #include "io/initial_configuration.hpp"
 #include "io/schema_reader.hpp"
+#include "tests/scratch_dir.hpp"
 
 using namespace suspend;
 using namespace suspend::io;

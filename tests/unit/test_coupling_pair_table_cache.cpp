@@ -2,13 +2,13 @@
 // other parameter is recomputed and replaced, never used), and what is read back equals what was computed.
 // Small coarse table (L = 6 (a_i + a_j), h = 0.75, three gaps) so that the test is fast; the values themselves
 // are checked against the exact two-sphere functions in tests/validation/test_coupling_two_spheres.cpp.
-#include "tests/scratch_dir.hpp"
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "coupling/fcm_pair_resistance.hpp"
 #include "coupling/pair_tensors.hpp"
+#include "tests/scratch_dir.hpp"
 
 using namespace suspend;
 using namespace suspend::coupling;

@@ -1,5 +1,4 @@
 // run.h5 round trip, truncation on restart, checkpoint round trip and refusal, and the XDMF references.
-#include "tests/scratch_dir.hpp"
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -17,6 +16,7 @@
 #include "io/hdf5.hpp"
 #include "io/run_file.hpp"
 #include "io/xdmf.hpp"
+#include "tests/scratch_dir.hpp"
 
 using namespace suspend;
 using namespace suspend::io;
