@@ -136,30 +136,38 @@ void Simulation::finish_stress(const StressTensors& hydrodynamic) {
   stress_[Contribution::hydrodynamic] += flow(rate_).ambient_stress();
 }
 
-double Simulation::pair_rate(double rate) const {
+PairBound Simulation::pair_rate(double rate) const {
   const TimeStepParams& ts = params_.time_step;
-  if (ts.mode == TimeStepParams::Mode::fixed || ts.bound != TimeStepParams::Bound::pairs) return 0.0;
+  if (ts.mode == TimeStepParams::Mode::fixed || ts.bound != TimeStepParams::Bound::pairs) return {};
   const PairMotionLimits limits{contact_displacement(ts, params_.contact, contacts_.sums().mean_compliance()),
                                 ts.max_displacement, contact_range(params_.contact), ts.gap_change};
-  return pair_motion_rate(contacts_.pairs(), state_.particles, rate * box_.length().y(), contacts_.records(), limits,
-                          bound_rank(state_.particles.size(), ts.fastest_of), &pair_rates_);
+  PairBound bound;
+  bound.rate = pair_motion_rate(contacts_.pairs(), state_.particles, rate * box_.length().y(), contacts_.records(),
+                                limits, bound_rank(state_.particles.size(), ts.fastest_of), &pair_rates_, &bound.limit);
+  return bound;
 }
 
-double Simulation::next_time_step(double max_speed) const {
+double Simulation::next_time_step(double max_speed, StepLimit& limit) const {
   // Fixed, or bounded strain increment, non-affine displacement and the fastest contact or hydrodynamic time
-  // scale (overdamped: drag relaxation 6 pi a / k; inertial: sqrt(m / k) and m / R).
+  // scale (overdamped: drag relaxation 6 pi a / k; inertial: sqrt(m / k) and m / R). Implicit contacts: the step
+  // chosen before the solve, and what set it.
   const TimeStepParams& ts = params_.time_step;
   double dt = dt_;
   if (ts.mode == TimeStepParams::Mode::fixed) {
     dt = ts.fixed;
+    limit = StepLimit::fixed;
   } else if (verlet_) {
     dt = std::abs(rate_) > 0.0 ? ts.max / std::abs(rate_) : ts.max;
     if (max_speed > 0.0) dt = std::min(dt, ts.max_displacement / max_speed);
     dt = std::min(dt, verlet_->stability_time_step(stiffness_scale(params_.contact), ts.stability));
+    limit = StepLimit::fixed;
   } else if (!ts.implicit_contacts) {
-    dt = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt, 0.0, pair_rate(rate_));
+    dt = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt, 0.0, pair_rate(rate_),
+                              &limit);
   }
-  return std::min(dt, params_.flow.max_time_step(state_.time));
+  const double flow_step = params_.flow.max_time_step(state_.time);
+  if (flow_step < dt) limit = StepLimit::flow;
+  return std::min(dt, flow_step);
 }
 
 void Simulation::evaluate() {
@@ -180,8 +188,11 @@ void Simulation::evaluate() {
     dt_ = overdamped_time_step(params_.time_step, params_.contact, state_.shear_rate,
                                nonaffine_bounding_speed(p, flow(state_.shear_rate), params_.time_step.fastest_of, speeds_),
                                a_min_, state_.last_dt,
-                               contacts_.sums().mean_compliance(), pair_rate(state_.shear_rate));
-    dt_ = std::min(dt_, params_.flow.max_time_step(state_.time));
+                               contacts_.sums().mean_compliance(), pair_rate(state_.shear_rate), &step_limit_);
+    if (const double flow_step = params_.flow.max_time_step(state_.time); flow_step < dt_) {
+      dt_ = flow_step;
+      step_limit_ = StepLimit::flow;
+    }
     implicit = {&contacts_.stiffness(), dt_};
   }
   // 3-4. Hydrodynamics and flow control (imposed rate now; imposed stress inside, from the model's two parts),
@@ -193,12 +204,17 @@ void Simulation::evaluate() {
   // shorter one (the rate under imposed stress jumps as a force chain lets go, a contact opens), solve again with it.
   const TimeStepParams& ts = params_.time_step;
   for (int again = 0; implicit.enabled() && ts.mode == TimeStepParams::Mode::adaptive && again < 4; ++again) {
-    const double needed = std::min(
+    StepLimit needed_limit = StepLimit::fixed;
+    double needed =
         overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, std::numeric_limits<double>::infinity(),
-                             contacts_.sums().mean_compliance(), pair_rate(rate_)),
-        params_.flow.max_time_step(state_.time));
+                             contacts_.sums().mean_compliance(), pair_rate(rate_), &needed_limit);
+    if (const double flow_step = params_.flow.max_time_step(state_.time); flow_step < needed) {
+      needed = flow_step;
+      needed_limit = StepLimit::flow;
+    }
     if (!(dt_ > step_overshoot * needed)) break;
     dt_ = needed;
+    step_limit_ = needed_limit;
     implicit.dt = dt_;
     max_speed = overdamped_velocities(load(implicit));
   }
@@ -214,7 +230,7 @@ void Simulation::evaluate() {
       fail(s.str());
     }
   // 6. Time step.
-  dt_ = next_time_step(max_speed);
+  dt_ = next_time_step(max_speed, step_limit_);
   evaluated_ = true;
 }
 
@@ -239,6 +255,7 @@ void Simulation::advance() {
   state_.last_dt = dt_;
   state_.shear_rate = rate_;
   ++state_.step;
+  step_limits_.add(step_limit_);
   box_.set_strain(state_.strain);
   for (std::size_t i = 0; i < n; ++i) {
     const int crossings = box_.wrap(p.position[i]);

@@ -94,7 +94,12 @@ class Simulation {
   // Moves particles by the velocities of the last evaluate() over its time step; wraps; updates strain and time.
   void advance();
   // Shortens the step evaluate() chose (never lengthens it), e.g. so that the last step ends on run.strain.
-  void clip_time_step(double dt) { dt_ = std::min(dt_, dt); }
+  void clip_time_step(double dt) {
+    if (dt < dt_) step_limit_ = StepLimit::flow;
+    dt_ = std::min(dt_, dt);
+  }
+  // The steps advanced by this object, by what set their length (printed at the end of `suspend run`).
+  const StepLimitCounts& step_limits() const { return step_limits_; }
 
   // The state, with the contact histories and the model's warm start copied in (for checkpoints).
   SimulationState state_with_contacts() const;
@@ -127,10 +132,10 @@ class Simulation {
   double overdamped_velocities(const HydroLoad& load);  // return the largest non-affine speed
   double inertial_velocities(const HydroLoad& load);
   void finish_stress(const StressTensors& hydrodynamic);
-  double next_time_step(double max_speed) const;
+  double next_time_step(double max_speed, StepLimit& limit) const;
   // bound = pairs: the pairs' relative motion per unit step (dem/integrate/pair_motion.hpp) at the particles'
   // velocities, Lees-Edwards images moving at `rate` L_y; 0 otherwise.
-  double pair_rate(double rate) const;
+  PairBound pair_rate(double rate) const;
 
   SimulationState state_;
   Box box_;
@@ -148,6 +153,8 @@ class Simulation {
   std::vector<Vec3> nonaffine_;
   StressTensors stress_;
   double dt_ = 0.0;
+  StepLimit step_limit_ = StepLimit::fixed;  // what set dt_
+  StepLimitCounts step_limits_;
   // Implicit contacts: a step is solved again with the step its own motion allows when it exceeds that by this factor.
   static constexpr double step_overshoot = 2.0;
   const std::vector<Vec3>* contact_change_ = nullptr;  // the final solve's contact changes (model-owned)

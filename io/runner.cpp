@@ -133,6 +133,9 @@ int run_loop(RunContext& r) {
               v("eta_r", "mean"), v("eta_r", "sem"), v("N1", "mean"), v("N1", "sem"), v("N2", "mean"), v("N2", "sem"),
               v("Pi", "mean"), v("Pi", "sem"), r.c.run.average_from, r.strain(),
               summary["samples"].get<std::size_t>());
+  if (const StepLimitCounts& limits = sim.step_limits(); limits.total() > 0)
+    std::printf("steps set by: %s (%lld steps of this run)\n", limits.shares().c_str(),
+                static_cast<long long>(limits.total()));
   return 0;
 }
 }  // namespace

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/particles.hpp"
+#include "dem/integrate/step_limit.hpp"
 #include "dem/pair_forces.hpp"
 
 namespace suspend {
@@ -33,9 +34,10 @@ struct PairMotionLimits {
 // The rank-th largest over pairs (the largest for rank 1) of (relative speed / allowed displacement): the step must
 // be at most its inverse (0: no pair moves). image_velocity: the Lees-Edwards velocity of the image of j per y image
 // (gammadot L_y); records: the contact stage's per-pair records (which pairs are in contact), same order as pairs;
-// ranking: kept by the caller for rank > 1 (time_step_control.hpp, bound_rank).
+// ranking: kept by the caller for rank > 1 (time_step_control.hpp, bound_rank); `limit`, if given, receives the
+// kind of bound of the pair that sets the rate (contact_normal, slip or approach; unchanged if no pair moves).
 double pair_motion_rate(const std::vector<ActivePair>& pairs, const Particles& p, double image_velocity,
                         const ContactRecords& records, const PairMotionLimits& limits,
-                        std::size_t rank = 1, KthLargest* ranking = nullptr);
+                        std::size_t rank = 1, KthLargest* ranking = nullptr, StepLimit* limit = nullptr);
 
 }  // namespace suspend

@@ -32,6 +32,7 @@
 
 #include "core/error.hpp"
 #include "dem/contact/contact_law.hpp"
+#include "dem/integrate/step_limit.hpp"
 
 namespace suspend {
 
@@ -82,28 +83,35 @@ inline double kth_largest(std::vector<double>& values, std::size_t k) {
 }
 
 // The k-th largest of a stream of values (kth_largest without the values: the k largest seen, in a min-heap), so
-// that ranking the pairs costs k numbers instead of one per pair. Fewer than k values: the smallest; none: 0.
+// that ranking the pairs costs k numbers instead of one per pair, each with a tag (what kind of value it is). Fewer
+// than k values: the smallest; none: 0 (tag -1).
 class KthLargest {
  public:
   void reset(std::size_t k) {
     k_ = std::max<std::size_t>(k, 1);
     heap_.clear();
   }
-  void add(double v) {
+  void add(double v, int tag = 0) {
     if (heap_.size() < k_) {
-      heap_.push_back(v);
-      std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
-    } else if (v > heap_.front()) {
-      std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
-      heap_.back() = v;
-      std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+      heap_.push_back({v, tag});
+      std::push_heap(heap_.begin(), heap_.end(), later);
+    } else if (v > heap_.front().value) {
+      std::pop_heap(heap_.begin(), heap_.end(), later);
+      heap_.back() = {v, tag};
+      std::push_heap(heap_.begin(), heap_.end(), later);
     }
   }
-  double value() const { return heap_.empty() ? 0.0 : heap_.front(); }
+  double value() const { return heap_.empty() ? 0.0 : heap_.front().value; }
+  int tag() const { return heap_.empty() ? -1 : heap_.front().tag; }
 
  private:
+  struct Tagged {
+    double value;
+    int tag;
+  };
+  static bool later(const Tagged& a, const Tagged& b) { return a.value > b.value; }
   std::size_t k_ = 1;
-  std::vector<double> heap_;
+  std::vector<Tagged> heap_;
 };
 
 // The speed the displacement bound applies to (see above): the k-th largest of the particles' `speeds`, k =
@@ -138,21 +146,44 @@ inline double contact_displacement(const TimeStepParams& ts, const ContactLaw& l
   return displacement;
 }
 
+// The pair bound of the overdamped step: pair_motion_rate() and the kind of the pair that sets it.
+struct PairBound {
+  double rate = 0.0;                        // 1 / the longest step the pairs allow; 0: no pair moves
+  StepLimit limit = StepLimit::approach;    // contact_normal, slip or approach
+};
+
 // Adaptive overdamped step for shear rate `rate`, largest non-affine speed `max_speed` and, with bound = pairs,
-// `pair_rate` = pair_motion_rate() with the contact displacement above (both of this step for explicit contacts, of
+// `pair` from pair_motion_rate() with the contact displacement above (both of this step for explicit contacts, of
 // the last one for implicit contacts, whose step precedes the solve); `compliance`: the mean contact compliance
-// length.
+// length. `limit`, if given, receives the bound that set the step (the first of equal ones in the order above).
 inline double overdamped_time_step(const TimeStepParams& ts, const ContactLaw& law, double rate, double max_speed,
-                                   double a_min, double last_dt, double compliance = 0.0, double pair_rate = 0.0) {
-  if (ts.mode == TimeStepParams::Mode::fixed) return ts.fixed;
-  double dt = std::abs(rate) > 0.0 ? ts.max / std::abs(rate) : ts.max;
-  const bool pairs = ts.bound == TimeStepParams::Bound::pairs;
-  const double displacement = pairs ? ts.max_displacement : contact_displacement(ts, law, compliance);
-  if (max_speed > 0.0) dt = std::min(dt, displacement / max_speed);
-  if (pairs && pair_rate > 0.0) dt = std::min(dt, 1.0 / pair_rate);
-  const double explicit_bound = explicit_contact_time_step(ts, law, a_min);
-  if (!ts.implicit_contacts) return std::min(dt, explicit_bound);
-  return last_dt > 0.0 ? std::min(dt, ts.growth * last_dt) : std::min(dt, explicit_bound);
+                                   double a_min, double last_dt, double compliance = 0.0, PairBound pair = {},
+                                   StepLimit* limit = nullptr) {
+  StepLimit set_by = StepLimit::fixed;
+  double dt = ts.fixed;
+  auto bound = [&](double candidate, StepLimit by) {
+    if (candidate < dt) {
+      dt = candidate;
+      set_by = by;
+    }
+  };
+  if (ts.mode == TimeStepParams::Mode::adaptive) {
+    dt = std::abs(rate) > 0.0 ? ts.max / std::abs(rate) : ts.max;
+    set_by = StepLimit::strain;
+    const bool pairs = ts.bound == TimeStepParams::Bound::pairs;
+    const double displacement = pairs ? ts.max_displacement : contact_displacement(ts, law, compliance);
+    if (max_speed > 0.0) bound(displacement / max_speed, StepLimit::particles);
+    if (pairs && pair.rate > 0.0) bound(1.0 / pair.rate, pair.limit);
+    const double explicit_bound = explicit_contact_time_step(ts, law, a_min);
+    if (!ts.implicit_contacts)
+      bound(explicit_bound, StepLimit::contact_stiffness);
+    else if (last_dt > 0.0)
+      bound(ts.growth * last_dt, StepLimit::growth);
+    else
+      bound(explicit_bound, StepLimit::contact_stiffness);
+  }
+  if (limit) *limit = set_by;
+  return dt;
 }
 
 }  // namespace suspend

@@ -347,6 +347,19 @@ TEST(Cli, ThreadsBeyondTheCoresAreCappedWithAWarning) {
   EXPECT_NE(r.err.find("warning: 4096 threads asked for"), std::string::npos) << r.err;
 }
 
+TEST(Cli, ARunEndsWithWhatSetItsSteps) {
+  const std::string c = fresh_dir("step_limits");
+  const Result r = run(with_lighter({"run", restart_case, "--out", c, "--threads", "1", "--set", "run.strain=0.02",
+                                     "--set", "run.average_from=0.01"}));
+  ASSERT_EQ(r.code, 0) << r.err;
+  // e.g. "steps set by: particles 60%, strain 40% (25 steps of this run)": the shares of the kinds of
+  // dem/integrate/step_limit.hpp.
+  const auto line = r.out.find("steps set by: ");
+  ASSERT_NE(line, std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" steps of this run)", line), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("%", line), std::string::npos) << r.out;
+}
+
 TEST(Cli, ACheckpointEditedWithItsChecksumsRecomputedIsRefused) {
   // Checksums can be recomputed (write_checkpoint does): the particles themselves are checked against the case.
   const std::string c = fresh_dir("edited_checkpoint");

@@ -74,10 +74,14 @@ TEST(PairMotion, RankTwoIsTheSecondFastestPair) {
   std::vector<ContactRecord> records(3);
   records[0].contact = records[2].contact = true;
   KthLargest scratch;
-  EXPECT_DOUBLE_EQ(pair_motion_rate(pairs, p, 0.0, records, limits), 0.6 / 2e-3);
+  StepLimit kind = StepLimit::fixed;
+  EXPECT_DOUBLE_EQ(pair_motion_rate(pairs, p, 0.0, records, limits, 1, nullptr, &kind), 0.6 / 2e-3);
+  EXPECT_EQ(kind, StepLimit::slip);
   EXPECT_DOUBLE_EQ(pair_motion_rate(pairs, p, 0.0, records, limits, 1, &scratch), 0.6 / 2e-3);
-  EXPECT_DOUBLE_EQ(pair_motion_rate(pairs, p, 0.0, records, limits, 2, &scratch), 0.1 / 5e-4);
-  EXPECT_NEAR(pair_motion_rate(pairs, p, 0.0, records, limits, 3, &scratch), 0.1 / (5e-4 + 0.1 * 0.2), 1e-12);
+  EXPECT_DOUBLE_EQ(pair_motion_rate(pairs, p, 0.0, records, limits, 2, &scratch, &kind), 0.1 / 5e-4);
+  EXPECT_EQ(kind, StepLimit::contact_normal);  // the ranked pair's kind, not the fastest one's
+  EXPECT_NEAR(pair_motion_rate(pairs, p, 0.0, records, limits, 3, &scratch, &kind), 0.1 / (5e-4 + 0.1 * 0.2), 1e-12);
+  EXPECT_EQ(kind, StepLimit::approach);
   EXPECT_EQ(bound_rank(999, 500), 1u);
   EXPECT_EQ(bound_rank(2000, 500), 4u);
   EXPECT_EQ(bound_rank(65536, 0), 1u);
@@ -90,16 +94,39 @@ TEST(PairMotion, PairsBoundFollowsTheFastestPairNotTheFastestParticle) {
   const double h_r = contact_range(law);
   ASSERT_GT(h_r, 0.0);
   const double last_dt = 1.0;
+  StepLimit limit = StepLimit::fixed;
   // A particle moving at 0.2 relative to the flow, with no pair moving: the particle bound, max_displacement / 0.2.
-  EXPECT_DOUBLE_EQ(overdamped_time_step(ts, law, 0.01, 0.2, 1.0, last_dt, 0.0, 0.0), ts.max_displacement / 0.2);
+  EXPECT_DOUBLE_EQ(overdamped_time_step(ts, law, 0.01, 0.2, 1.0, last_dt, 0.0, {}, &limit), ts.max_displacement / 0.2);
+  EXPECT_EQ(limit, StepLimit::particles);
   // The former rule: the contact displacement (a tenth of the range) for every particle.
   TimeStepParams former = ts;
   former.bound = TimeStepParams::Bound::particles;
   EXPECT_DOUBLE_EQ(overdamped_time_step(former, law, 0.01, 0.2, 1.0, last_dt, 0.0), 0.1 * h_r / 0.2);
-  // A pair rate above the particle bound decides.
-  EXPECT_DOUBLE_EQ(overdamped_time_step(ts, law, 0.01, 0.2, 1.0, last_dt, 0.0, 1000.0), 1e-3);
+  // A pair rate above the particle bound decides, and says which kind of pair motion it was.
+  EXPECT_DOUBLE_EQ(overdamped_time_step(ts, law, 0.01, 0.2, 1.0, last_dt, 0.0, {1000.0, StepLimit::slip}, &limit),
+                   1e-3);
+  EXPECT_EQ(limit, StepLimit::slip);
+  // Nothing moves: the strain increment, then the growth of the implicit step over the last one.
+  EXPECT_DOUBLE_EQ(overdamped_time_step(ts, law, 1e-3, 0.0, 1.0, last_dt, 0.0, {}, &limit), ts.growth * last_dt);
+  EXPECT_EQ(limit, StepLimit::growth);
+  EXPECT_DOUBLE_EQ(overdamped_time_step(ts, law, 1.0, 0.0, 1.0, last_dt, 0.0, {}, &limit), ts.max);
+  EXPECT_EQ(limit, StepLimit::strain);
+  TimeStepParams fixed = ts;
+  fixed.mode = TimeStepParams::Mode::fixed;
+  EXPECT_DOUBLE_EQ(overdamped_time_step(fixed, law, 1.0, 0.2, 1.0, last_dt, 0.0, {}, &limit), fixed.fixed);
+  EXPECT_EQ(limit, StepLimit::fixed);
   EXPECT_DOUBLE_EQ(contact_displacement(ts, law, 0.0), 0.1 * h_r);
   EXPECT_DOUBLE_EQ(contact_displacement(ts, law, 1e-4), 4e-4);  // four compliance lengths
+}
+
+TEST(StepLimitCounts, SharesAreLargestFirstAndLeaveOutBoundsThatSetNoStep) {
+  StepLimitCounts counts;
+  EXPECT_EQ(counts.shares(), "");
+  for (int k = 0; k < 3; ++k) counts.add(StepLimit::slip);
+  counts.add(StepLimit::approach);
+  EXPECT_EQ(counts.total(), 4);
+  EXPECT_EQ(counts[StepLimit::slip], 3);
+  EXPECT_EQ(counts.shares(), "slip 75%, approach 25%");
 }
 
 TEST(BoundingSpeed, IsTheFastestOfEveryFastestOfParticles) {
@@ -158,4 +185,13 @@ TEST(KthLargest, IsTheKthLargestOfTheStream) {
   KthLargest none;
   none.reset(3);
   EXPECT_EQ(none.value(), 0.0);
+  EXPECT_EQ(none.tag(), -1);
+  // The tag travels with its value: the 2nd largest of 0.5 (tag 1), 0.9 (tag 2), 0.7 (tag 3) is 0.7, tag 3.
+  KthLargest tagged;
+  tagged.reset(2);
+  tagged.add(0.5, 1);
+  tagged.add(0.9, 2);
+  tagged.add(0.7, 3);
+  EXPECT_EQ(tagged.value(), 0.7);
+  EXPECT_EQ(tagged.tag(), 3);
 }
