@@ -71,7 +71,7 @@ void add_sweep_command(CLI::App& app) {
     if (cmd->count("--jobs") == 0) opt->sweep.jobs = std::max(1, omp_get_num_procs() / opt->sweep.threads);
     if (opt->status) {
       campaign::check_points(c, opt->out);  // a campaign the sweep would refuse is refused here too
-      campaign::print_status(c, opt->out, opt->sweep.jobs);
+      campaign::print_status(c, opt->out, opt->sweep.jobs, campaign::points_to_come(c, plan));
       return;
     }
     // Once, before any point: every round of a search runs the same program, even if it is replaced meanwhile.

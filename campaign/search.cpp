@@ -141,6 +141,24 @@ Campaign with_search_points(const Campaign& c, const std::vector<GroupSearch>& p
   return out;
 }
 
+int points_to_come(const Campaign& c, const std::vector<GroupSearch>& plan) {
+  if (!c.search) return 0;
+  const Search& s = *c.search;
+  // Halvings that bring a bracket of this width within the tolerance.
+  auto rounds = [&](double width) {
+    return width <= s.tolerance * (1.0 + 1e-9) ? 0 : static_cast<int>(std::ceil(std::log2(width / s.tolerance) - 1e-9));
+  };
+  int points = 0;
+  for (const GroupSearch& g : plan) {
+    if (g.state != "searching") continue;
+    // Not yet bracketed: the two ends are the planned values, every halving of hi - lo is to come. Bracketed: the
+    // planned midpoint is the first halving.
+    const int to_come = g.bracketed ? rounds(std::abs(g.jam_end - g.flow_end)) - 1 : rounds(s.hi - s.lo);
+    points += s.seeds * std::max(0, to_come);
+  }
+  return points;
+}
+
 std::string describe_search(const Campaign& c, const std::vector<GroupSearch>& plan) {
   std::string out;
   for (const GroupSearch& g : plan) {

@@ -37,6 +37,11 @@ std::vector<GroupSearch> plan_search(const Campaign& c, const std::filesystem::p
 // The campaign with its points: every point the search has tried or will try next.
 Campaign with_search_points(const Campaign& c, const std::vector<GroupSearch>& plan);
 
+// About how many points the searching groups will still add once their pending values end: per group, the seeds of
+// every further bisection its bracket (hi - lo before both ends are decided) needs to come within the tolerance,
+// beyond the values already planned. An estimate: the grid may save a round. For `sweep --status`.
+int points_to_come(const Campaign& c, const std::vector<GroupSearch>& plan);
+
 // One line per group: its state, bracket and next values (for --list and the sweep's progress).
 std::string describe_search(const Campaign& c, const std::vector<GroupSearch>& plan);
 

@@ -65,7 +65,7 @@ RunProgress read_progress(const fs::path& log) {
   return p;
 }
 
-int print_status(const Campaign& c, const fs::path& out_dir, int jobs) {
+int print_status(const Campaign& c, const fs::path& out_dir, int jobs, int to_come) {
   std::map<std::string, int> counts;
   double finished_seconds = 0.0, running_left = 0.0;
   int finished = 0, waiting = 0, running = 0, failed = 0;
@@ -114,7 +114,9 @@ int print_status(const Campaign& c, const fs::path& out_dir, int jobs) {
   for (const auto& [s, n] : counts) line += (line.empty() ? "" : ", ") + std::to_string(n) + " " + s;
   std::printf("%zu point(s): %s\n", c.points.size(), line.c_str());
   if (failed > 0) std::printf("%d failed point(s) wait for `suspend sweep ... --retry-failed`\n", failed);
-  if (waiting == 0 && running == 0) {
+  if (to_come > 0)
+    std::printf("the search will add about %d more point(s) as it bisects (counted in the time left)\n", to_come);
+  if (waiting == 0 && running == 0 && to_come == 0) {
     std::printf("nothing left to run: %s of point time in all\n", hours_text(finished_seconds).c_str());
   } else if (finished == 0) {
     std::printf("time left: unknown until a point finishes (running points: %s)\n", hours_text(running_left).c_str());
@@ -122,13 +124,13 @@ int print_status(const Campaign& c, const fs::path& out_dir, int jobs) {
     // Points still to start are taken to cost what the finished ones cost on average (failed ones are not
     // counted: they wait for --retry-failed).
     const double per_point = finished_seconds / finished;
-    const double left = waiting * per_point + running_left;
+    const double left = (waiting + to_come) * per_point + running_left;
     std::printf("time left: about %s of point time (%d to start at %s each, as the %d finished took; running "
                 "points %s), %s at %d point(s) at a time\n",
-                hours_text(left).c_str(), waiting, hours_text(per_point).c_str(), finished,
+                hours_text(left).c_str(), waiting + to_come, hours_text(per_point).c_str(), finished,
                 hours_text(running_left).c_str(), hours_text(left / std::max(1, jobs)).c_str(), jobs);
   }
-  return waiting + running + failed;
+  return waiting + running + failed + to_come;
 }
 
 }  // namespace suspend::campaign

@@ -17,7 +17,8 @@ struct RunProgress {
 RunProgress read_progress(const std::filesystem::path& log);
 
 // Prints one line per point (done, jammed, failed, running with its strain and strain per hour, interrupted,
-// pending) and the estimated time left at `jobs` points at a time. Returns the number of points not yet finished.
-int print_status(const Campaign& c, const std::filesystem::path& out_dir, int jobs);
+// pending) and the estimated time left at `jobs` points at a time, counting `to_come` points a search will still add
+// (points_to_come, campaign/search.hpp). Returns the number of points not yet finished.
+int print_status(const Campaign& c, const std::filesystem::path& out_dir, int jobs, int to_come = 0);
 
 }  // namespace suspend::campaign

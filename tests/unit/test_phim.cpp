@@ -9,6 +9,7 @@
 
 #include "campaign/maron_pierce.hpp"
 #include "campaign/phim.hpp"
+#include "campaign/search.hpp"
 
 using namespace suspend::campaign;
 using json = nlohmann::ordered_json;
@@ -218,4 +219,26 @@ TEST(MaronPierce, AFreeExponentIsRecoveredFromExactData) {
   std::string why;
   EXPECT_FALSE(fit_free_exponent({p.begin(), p.begin() + 3}, &why));
   EXPECT_NE(why.find("at least 4"), std::string::npos) << why;
+}
+
+TEST(SearchEstimate, PointsToComeAreTheSeedsOfTheHalvingsLeft) {
+  Campaign c;
+  c.search = Search{"particles.phi", 0.40, 0.64, 0.01, 3};
+  GroupSearch ends;  // only the two ends planned: 0.24 wide takes 5 halvings (0.24 / 2^5 = 0.0075)
+  ends.state = "searching";
+  GroupSearch bracket;  // bracket [0.52, 0.55] with its midpoint planned: one halving after it
+  bracket.state = "searching";
+  bracket.bracketed = true;
+  bracket.flow_end = 0.52;
+  bracket.jam_end = 0.55;
+  GroupSearch last = bracket;  // [0.52, 0.54]: the planned midpoint is the last
+  last.jam_end = 0.54;
+  GroupSearch done = bracket;
+  done.state = "converged";
+  EXPECT_EQ(points_to_come(c, {ends}), 15);
+  EXPECT_EQ(points_to_come(c, {bracket}), 3);
+  EXPECT_EQ(points_to_come(c, {last, done}), 0);
+  EXPECT_EQ(points_to_come(c, {ends, bracket, last, done}), 18);
+  c.search.reset();
+  EXPECT_EQ(points_to_come(c, {ends}), 0);
 }
