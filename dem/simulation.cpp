@@ -147,27 +147,25 @@ PairBound Simulation::pair_rate(double rate) const {
   return bound;
 }
 
-double Simulation::next_time_step(double max_speed, StepLimit& limit) const {
+StepBound Simulation::next_time_step(double max_speed) const {
   // Fixed, or bounded strain increment, non-affine displacement and the fastest contact or hydrodynamic time
   // scale (overdamped: drag relaxation 6 pi a / k; inertial: sqrt(m / k) and m / R). Implicit contacts: the step
-  // chosen before the solve, and what set it.
+  // chosen before the solve.
   const TimeStepParams& ts = params_.time_step;
-  double dt = dt_;
+  StepBound step = step_;
   if (ts.mode == TimeStepParams::Mode::fixed) {
-    dt = ts.fixed;
-    limit = StepLimit::fixed;
+    step = {ts.fixed, StepLimit::fixed};
   } else if (verlet_) {
-    dt = std::abs(rate_) > 0.0 ? ts.max / std::abs(rate_) : ts.max;
-    if (max_speed > 0.0) dt = std::min(dt, ts.max_displacement / max_speed);
-    dt = std::min(dt, verlet_->stability_time_step(stiffness_scale(params_.contact), ts.stability));
-    limit = StepLimit::fixed;
+    step = {std::abs(rate_) > 0.0 ? ts.max / std::abs(rate_) : ts.max, StepLimit::strain};
+    if (max_speed > 0.0) step.at_most(ts.max_displacement / max_speed, StepLimit::particles);
+    step.at_most(verlet_->stability_time_step(stiffness_scale(params_.contact), ts.stability),
+                 StepLimit::contact_stiffness);
   } else if (!ts.implicit_contacts) {
-    dt = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt, 0.0, pair_rate(rate_),
-                              &limit);
+    step.dt = overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, state_.last_dt, 0.0,
+                                   pair_rate(rate_), &step.limit);
   }
-  const double flow_step = params_.flow.max_time_step(state_.time);
-  if (flow_step < dt) limit = StepLimit::flow;
-  return std::min(dt, flow_step);
+  step.at_most(params_.flow.max_time_step(state_.time), StepLimit::flow);
+  return step;
 }
 
 void Simulation::evaluate() {
@@ -185,15 +183,12 @@ void Simulation::evaluate() {
   // this step's contacts.
   ImplicitContacts implicit;
   if (params_.time_step.implicit_contacts) {
-    dt_ = overdamped_time_step(params_.time_step, params_.contact, state_.shear_rate,
-                               nonaffine_bounding_speed(p, flow(state_.shear_rate), params_.time_step.fastest_of, speeds_),
-                               a_min_, state_.last_dt,
-                               contacts_.sums().mean_compliance(), pair_rate(state_.shear_rate), &step_limit_);
-    if (const double flow_step = params_.flow.max_time_step(state_.time); flow_step < dt_) {
-      dt_ = flow_step;
-      step_limit_ = StepLimit::flow;
-    }
-    implicit = {&contacts_.stiffness(), dt_};
+    step_.dt = overdamped_time_step(
+        params_.time_step, params_.contact, state_.shear_rate,
+        nonaffine_bounding_speed(p, flow(state_.shear_rate), params_.time_step.fastest_of, speeds_), a_min_,
+        state_.last_dt, contacts_.sums().mean_compliance(), pair_rate(state_.shear_rate), &step_.limit);
+    step_.at_most(params_.flow.max_time_step(state_.time), StepLimit::flow);
+    implicit = {&contacts_.stiffness(), step_.dt};
   }
   // 3-4. Hydrodynamics and flow control (imposed rate now; imposed stress inside, from the model's two parts),
   // then the stress.
@@ -204,18 +199,14 @@ void Simulation::evaluate() {
   // shorter one (the rate under imposed stress jumps as a force chain lets go, a contact opens), solve again with it.
   const TimeStepParams& ts = params_.time_step;
   for (int again = 0; implicit.enabled() && ts.mode == TimeStepParams::Mode::adaptive && again < 4; ++again) {
-    StepLimit needed_limit = StepLimit::fixed;
-    double needed =
+    StepBound needed;
+    needed.dt =
         overdamped_time_step(ts, params_.contact, rate_, max_speed, a_min_, std::numeric_limits<double>::infinity(),
-                             contacts_.sums().mean_compliance(), pair_rate(rate_), &needed_limit);
-    if (const double flow_step = params_.flow.max_time_step(state_.time); flow_step < needed) {
-      needed = flow_step;
-      needed_limit = StepLimit::flow;
-    }
-    if (!(dt_ > step_overshoot * needed)) break;
-    dt_ = needed;
-    step_limit_ = needed_limit;
-    implicit.dt = dt_;
+                             contacts_.sums().mean_compliance(), pair_rate(rate_), &needed.limit);
+    needed.at_most(params_.flow.max_time_step(state_.time), StepLimit::flow);
+    if (!(step_.dt > step_overshoot * needed.dt)) break;
+    step_ = needed;
+    implicit.dt = step_.dt;
     max_speed = overdamped_velocities(load(implicit));
   }
   if (contact_change_)
@@ -230,7 +221,7 @@ void Simulation::evaluate() {
       fail(s.str());
     }
   // 6. Time step.
-  dt_ = next_time_step(max_speed, step_limit_);
+  step_ = next_time_step(max_speed);
   evaluated_ = true;
 }
 
@@ -243,19 +234,19 @@ void Simulation::advance() {
   const double ly = box_.length().y();
   for (std::size_t i = 0; i < n; ++i) {
     // Inertial: x^{n+2} = x^{n+1} + dt u^{n+3/2} (eqs. 15a-b).
-    const Vec3 u = verlet_ ? verlet_->half_step(i, p, dt_) : p.velocity[i];
+    const Vec3 u = verlet_ ? verlet_->half_step(i, p, step_.dt) : p.velocity[i];
     // Drift against the affine simple shear (the list accounts for that); a wave counts as drift.
-    nonaffine_[i] = (u - Vec3(rate_ * p.position[i].y(), 0.0, 0.0)) * dt_;
-    p.position[i] += u * dt_;
+    nonaffine_[i] = (u - Vec3(rate_ * p.position[i].y(), 0.0, 0.0)) * step_.dt;
+    p.position[i] += u * step_.dt;
   }
-  const double dstrain = rate_ * dt_;
+  const double dstrain = rate_ * step_.dt;
   state_.strain += dstrain;
   state_.accumulated_strain += std::abs(dstrain);
-  state_.time += dt_;
-  state_.last_dt = dt_;
+  state_.time += step_.dt;
+  state_.last_dt = step_.dt;
   state_.shear_rate = rate_;
   ++state_.step;
-  step_limits_.add(step_limit_);
+  step_limits_.add(step_.limit);
   box_.set_strain(state_.strain);
   for (std::size_t i = 0; i < n; ++i) {
     const int crossings = box_.wrap(p.position[i]);

@@ -94,10 +94,7 @@ class Simulation {
   // Moves particles by the velocities of the last evaluate() over its time step; wraps; updates strain and time.
   void advance();
   // Shortens the step evaluate() chose (never lengthens it), e.g. so that the last step ends on run.strain.
-  void clip_time_step(double dt) {
-    if (dt < dt_) step_limit_ = StepLimit::flow;
-    dt_ = std::min(dt_, dt);
-  }
+  void clip_time_step(double dt) { step_.at_most(dt, StepLimit::flow); }
   // The steps advanced by this object, by what set their length (printed at the end of `suspend run`).
   const StepLimitCounts& step_limits() const { return step_limits_; }
 
@@ -110,7 +107,7 @@ class Simulation {
   const HydrodynamicModel& model() const { return *model_; }
   // Shear rate of the current step (the imposed one, or the one the stress control chose).
   double shear_rate() const { return rate_; }
-  double time_step() const { return dt_; }
+  double time_step() const { return step_.dt; }
   const StressTensors& stress() const { return stress_; }
   double max_overlap() const { return contacts_.sums().max_overlap; }
   // Linear-solver iterations of the step (both problems under stress control) and the larger residual.
@@ -132,7 +129,7 @@ class Simulation {
   double overdamped_velocities(const HydroLoad& load);  // return the largest non-affine speed
   double inertial_velocities(const HydroLoad& load);
   void finish_stress(const StressTensors& hydrodynamic);
-  double next_time_step(double max_speed, StepLimit& limit) const;
+  StepBound next_time_step(double max_speed) const;
   // bound = pairs: the pairs' relative motion per unit step (dem/integrate/pair_motion.hpp) at the particles'
   // velocities, Lees-Edwards images moving at `rate` L_y; 0 otherwise.
   PairBound pair_rate(double rate) const;
@@ -152,8 +149,7 @@ class Simulation {
   mutable KthLargest pair_rates_;             // pair_rate's ranking
   std::vector<Vec3> nonaffine_;
   StressTensors stress_;
-  double dt_ = 0.0;
-  StepLimit step_limit_ = StepLimit::fixed;  // what set dt_
+  StepBound step_;  // the step evaluate() chose and what set it
   StepLimitCounts step_limits_;
   // Implicit contacts: a step is solved again with the step its own motion allows when it exceeds that by this factor.
   static constexpr double step_overshoot = 2.0;

@@ -15,10 +15,10 @@ enum class StepLimit {
   contact_normal,    // a contact's normal displacement (bound = pairs)
   slip,              // a contact's slip (bound = pairs: max_displacement)
   approach,          // an approaching pair's closing (bound = pairs: gap_change)
-  contact_stiffness, // explicit contacts: the stability of the fastest contact relaxation
+  contact_stiffness, // explicit contacts: the stability of the fastest contact relaxation (inertial: oscillation)
   growth,            // implicit contacts: the largest ratio of one step to the last
   flow,              // the flow's own step (an oscillation's period, a protocol's stage) or an output event
-  fixed,             // run.time_step.mode = fixed, or the inertial integrator
+  fixed,             // run.time_step.mode = fixed
   count
 };
 
@@ -27,6 +27,18 @@ inline const char* step_limit_name(StepLimit limit) {
       "strain", "particles", "contact_normal", "slip", "approach", "contact_stiffness", "growth", "flow", "fixed"};
   return names[static_cast<std::size_t>(limit)];
 }
+
+// A step and what set it, shortened bound by bound (`at_most`); the first of equal bounds keeps it.
+struct StepBound {
+  double dt = 0.0;
+  StepLimit limit = StepLimit::fixed;
+  void at_most(double candidate, StepLimit by) {
+    if (candidate < dt) {
+      dt = candidate;
+      limit = by;
+    }
+  }
+};
 
 // Steps counted by what set them.
 class StepLimitCounts {

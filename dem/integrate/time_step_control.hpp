@@ -159,31 +159,20 @@ struct PairBound {
 inline double overdamped_time_step(const TimeStepParams& ts, const ContactLaw& law, double rate, double max_speed,
                                    double a_min, double last_dt, double compliance = 0.0, PairBound pair = {},
                                    StepLimit* limit = nullptr) {
-  StepLimit set_by = StepLimit::fixed;
-  double dt = ts.fixed;
-  auto bound = [&](double candidate, StepLimit by) {
-    if (candidate < dt) {
-      dt = candidate;
-      set_by = by;
-    }
-  };
+  StepBound step{ts.fixed, StepLimit::fixed};
   if (ts.mode == TimeStepParams::Mode::adaptive) {
-    dt = std::abs(rate) > 0.0 ? ts.max / std::abs(rate) : ts.max;
-    set_by = StepLimit::strain;
+    step = {std::abs(rate) > 0.0 ? ts.max / std::abs(rate) : ts.max, StepLimit::strain};
     const bool pairs = ts.bound == TimeStepParams::Bound::pairs;
     const double displacement = pairs ? ts.max_displacement : contact_displacement(ts, law, compliance);
-    if (max_speed > 0.0) bound(displacement / max_speed, StepLimit::particles);
-    if (pairs && pair.rate > 0.0) bound(1.0 / pair.rate, pair.limit);
-    const double explicit_bound = explicit_contact_time_step(ts, law, a_min);
-    if (!ts.implicit_contacts)
-      bound(explicit_bound, StepLimit::contact_stiffness);
-    else if (last_dt > 0.0)
-      bound(ts.growth * last_dt, StepLimit::growth);
+    if (max_speed > 0.0) step.at_most(displacement / max_speed, StepLimit::particles);
+    if (pairs && pair.rate > 0.0) step.at_most(1.0 / pair.rate, pair.limit);
+    if (ts.implicit_contacts && last_dt > 0.0)
+      step.at_most(ts.growth * last_dt, StepLimit::growth);
     else
-      bound(explicit_bound, StepLimit::contact_stiffness);
+      step.at_most(explicit_contact_time_step(ts, law, a_min), StepLimit::contact_stiffness);
   }
-  if (limit) *limit = set_by;
-  return dt;
+  if (limit) *limit = step.limit;
+  return step.dt;
 }
 
 }  // namespace suspend
