@@ -26,8 +26,22 @@ json json_value(const std::string& text) {
   return text;
 }
 
+// The point a start from a file (a search's dense value, `particles.initial` naming POINTS/NAME/run.h5) descends
+// from, found among the campaign's points by its folder name; null when there is none.
+const Point* source_point(const Campaign& c, const Point& p) {
+  for (const Assignment& a : p.parameters) {
+    if (a.key != "particles.initial") continue;
+    const YAML::Node initial = YAML::Load(a.value);
+    if (!initial["file"]) return nullptr;
+    const std::string name = fs::path(initial["file"].as<std::string>()).parent_path().filename().string();
+    for (const Point& q : c.points)
+      if (q.name == name && &q != &p) return &q;
+  }
+  return nullptr;
+}
+
 // What the fits group by, read from the point's resolved case.
-json case_facts(const Point& p) {
+json case_facts(const Campaign& c, const Point& p, int depth = 0) {
   const YAML::Node n = YAML::Load(p.identity);
   json f;
   f["model"] = n["hydrodynamics"]["model"].as<std::string>();
@@ -53,10 +67,19 @@ json case_facts(const Point& p) {
     f["functions"] = lubrication["functions"] ? lubrication["functions"].as<std::string>() : "singular";
   else
     f["functions"] = "none";
-  // A start from a file (a search's dense value from a seed's flowing state, listed as its particles.initial) has its
-  // source point's size; a table restored without the source runs cannot resolve it.
-  for (const Assignment& a : p.parameters)
-    if (a.key == "particles.initial") return f;
+  // A start from a file (a search's dense value from a seed's flowing state, listed as its particles.initial) has the
+  // box and count of the packing it descends from (its own edge is that box compressed by (phi_source / phi)^(1/3),
+  // docs/output.md), so the size a campaign compares is named for every point, also in a table restored without runs.
+  for (const Assignment& a : p.parameters) {
+    if (a.key != "particles.initial") continue;
+    const Point* source = depth < 100 ? source_point(c, p) : nullptr;
+    if (!source) return f;
+    const json s = case_facts(c, *source, depth + 1);
+    f["started_from"] = source->name;
+    for (const char* key : {"box", "count"})
+      if (s.contains(key)) f[key] = s[key];
+    return f;
+  }
   const YAML::Node box = n["box"];
   if (box && box["length"]) {
     const double x = box["length"]["x"].as<double>(), y = box["length"]["y"].as<double>(),
@@ -80,7 +103,7 @@ json gather_table(const Campaign& c, const fs::path& dir) {
     e["status"] = r.status;
     e["parameters"] = json::object();
     for (const Assignment& a : p.parameters) e["parameters"][a.key] = json_value(a.value);
-    e["case"] = case_facts(p);
+    e["case"] = case_facts(c, p);
     e["wall_seconds"] = r.wall_seconds;
     if (!r.message.empty()) e["message"] = r.message;
     e["summary"] = nullptr;

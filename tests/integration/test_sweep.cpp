@@ -263,6 +263,10 @@ TEST(Sweep, TheSearchBisectsToTheBoundaryWithSeeds) {
       ++rescaled;
       EXPECT_EQ(p["case"]["phi"], 0.32) << p.dump();
       EXPECT_NE(log.find("from phi 0.3"), std::string::npos) << log.substr(0, 300);
+      // its case names the seed's point at 0.3 and the size of the packing it descends from, as the fresh points do
+      const std::string name = p["name"];
+      EXPECT_EQ(p["case"]["started_from"], "phi0.3_seed" + name.substr(name.rfind("seed") + 4)) << p.dump();
+      EXPECT_EQ(p["case"]["count"], 40) << p.dump();
     }
   }
   EXPECT_GE(rescaled, 2) << "the seeds that flowed at 0.3 start 0.32 from there";
@@ -424,6 +428,14 @@ TEST(Sweep, StoppedFlowEndsJammedAndBudgetEndsFailed) {
   EXPECT_TRUE(fs::exists(slow + "/points/base/checkpoint.h5"));
   EXPECT_EQ(run({"sweep", long_case, "--out", slow, "--quiet"}).code, 3) << "failed points are kept, not rerun";
   EXPECT_EQ(table(slow)["points"][0]["status"], "failed");
+  // Restored from its table on a new machine, the failed point still waits for --retry-failed, with its message.
+  const std::string restored = fresh_dir("sweep_budget_restored");
+  const std::string restore = "/usr/bin/python3 " SUSPEND_SOURCE_DIR "/tools/restore_campaign.py " + slow +
+                              "/campaign.json " + restored + " > /dev/null";
+  ASSERT_EQ(std::system(restore.c_str()), 0) << restore;
+  EXPECT_EQ(run({"sweep", long_case, "--out", restored, "--quiet"}).code, 3) << "a restored failure is not rerun";
+  EXPECT_EQ(table(restored)["points"][0]["message"], tb["points"][0]["message"]);
+  EXPECT_FALSE(fs::exists(restored + "/points/base/run.h5"));
   EXPECT_EQ(run({"sweep", long_case, "--out", slow, "--quiet", "--retry-failed", "--point-seconds", "1"}).code, 3);
   EXPECT_NE(read_text(slow + "/points/base/point.json").find("\"runs\": 2"), std::string::npos);
 }
