@@ -10,7 +10,11 @@ phi contrast across the slabs (max - min over the mean), and a flag when the med
 (default 0.25: a quarter of the cell's rate). A drifting band still shows in each snapshot, where a time average of
 the profile would blur it.
 
-usage: tools/banding_check.py CAMPAIGN_RUN_DIR [--suspend BIN] [--bins N] [--threshold R] [--json]
+--keep FILE takes the rows of an earlier table (this tool's text output, e.g. the committed banding.txt) for the points
+whose snapshots this folder no longer holds: a campaign folder rebuilt from its table on a new machine
+(tools/restore_campaign.py) has the points' records but not their runs, and its banding must not be lost with them.
+
+usage: tools/banding_check.py CAMPAIGN_RUN_DIR [--suspend BIN] [--bins N] [--threshold R] [--keep FILE] [--json]
 """
 import json
 import math
@@ -72,11 +76,31 @@ def point_row(suspend, point, bins, threshold):
             "phi_contrast": statistics.median(contrasts), "banded": r < threshold}
 
 
+def kept_rows(path, threshold):
+    """The point rows of an earlier text table (missing file: none)."""
+    rows = {}
+    try:
+        lines = open(path).read().splitlines()
+    except OSError:
+        return rows
+    for line in lines[1:]:
+        f = line.split()
+        if len(f) < 4 or not f[1].isdigit():
+            continue
+        try:
+            r = float(f[2])
+            rows[f[0]] = {"point": f[0], "snapshots": int(f[1]), "min_rate_ratio": r, "phi_contrast": float(f[3]),
+                          "banded": r < threshold}
+        except ValueError:
+            continue
+    return rows
+
+
 def main(argv):
     if not argv or argv[0] in ("-h", "--help"):
         print(__doc__.strip(), file=sys.stderr)
         sys.exit(2)
-    folder, suspend, bins, threshold, as_json = None, None, 8, 0.25, False
+    folder, suspend, bins, threshold, as_json, keep = None, None, 8, 0.25, False, None
     it = iter(argv)
     for a in it:
         try:
@@ -86,6 +110,8 @@ def main(argv):
                 bins = int(next(it))
             elif a == "--threshold":
                 threshold = float(next(it))
+            elif a == "--keep":
+                keep = next(it)
             elif a == "--json":
                 as_json = True
             elif a.startswith("--"):
@@ -103,6 +129,10 @@ def main(argv):
     points = sorted(os.path.join(folder, "points", p) for p in os.listdir(os.path.join(folder, "points")))
     rows = [r for r in (point_row(suspend, p, bins, threshold) for p in points
                         if os.path.isfile(os.path.join(p, "summary.json"))) if r]
+    if keep:
+        have = {r["point"] for r in rows}
+        rows += [r for name, r in kept_rows(keep, threshold).items() if name not in have]
+        rows.sort(key=lambda r: r["point"])
     if as_json:
         print(json.dumps(rows, indent=1))
         return

@@ -63,11 +63,13 @@ fit_boundaries() {  # NAME TABLE_FOLDER...
     > "results/phim/constraint_fit/$name.txt" 2> /dev/null) || rm -f "$root/results/phim/constraint_fit/$name.txt"
   # (a table with no bracketed group yet: nothing to fit, nothing written)
 }
-# Issue 36, item 5: shear banding in the flowing points of the boundary searches (from the raw runs' snapshots).
-for name in pairwise_boundary_exact pairwise_low_stress fcm_boundary pairwise_box20; do
+# Issue 36, item 5: shear banding in the flowing points of the boundary searches (from the raw runs' snapshots; the
+# committed rows are kept for points whose runs this machine does not have, a folder restored from its table).
+for name in pairwise_boundary_exact pairwise_boundary_exact_others pairwise_low_stress fcm_boundary pairwise_box20; do
   [ -d "$runs/$name/points" ] && [ -d "$root/results/phim/$name" ] || continue
-  /usr/bin/python3 "$root/tools/banding_check.py" "$runs/$name" --suspend "$suspend" \
-    > "$root/results/phim/$name/banding.txt" 2>&1 || true
+  banding=$root/results/phim/$name/banding.txt
+  /usr/bin/python3 "$root/tools/banding_check.py" "$runs/$name" --suspend "$suspend" --keep "$banding" \
+    > "$banding.part" 2>&1 && mv "$banding.part" "$banding" || rm -f "$banding.part"
 done
 mkdir -p "$root/results/phim/constraint_fit"
 fit_boundaries pairwise_singular pairwise_boundary pairwise_boundary_low_friction pairwise_boundary_low_friction_low_stress
