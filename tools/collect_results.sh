@@ -76,6 +76,8 @@ fit_boundaries pairwise_singular pairwise_boundary pairwise_boundary_low_frictio
 fit_boundaries pairwise_exact pairwise_boundary_exact pairwise_boundary_exact_others pairwise_low_stress
 fit_boundaries fcm fcm_boundary fcm_boundary_low_friction
 /usr/bin/python3 "$root/tools/phim_figures.py" "$root/results/phim"
+# results/README.md's phi_m tables (one campaign each, and Fig. 15 over all of them) from the tables just fitted
+/usr/bin/python3 "$root/tools/phim_table.py" --update "$root/results/README.md"
 # Issue 40's normal-stress ensemble: its table, and the means of singular against exact_relative per phi.
 if [ -f "$runs/normal_stress_functions/campaign.json" ]; then
   out="$root/results/normal_stress_functions"
