@@ -18,18 +18,15 @@ def fail(message):
     sys.exit(2)
 
 
-def main(argv):
-    if not argv or argv[0] in ("-h", "--help"):
-        print(__doc__.strip(), file=sys.stderr)
-        sys.exit(2)
+def cost_table(entries):
+    """The Markdown table of (name, campaign.json path) entries; a missing or unreadable table fails."""
     rows, total = [], 0.0
-    for path in argv:
-        table = os.path.join(path, "campaign.json") if os.path.isdir(path) else path
+    for name, table in entries:
         try:
             with open(table) as f:
                 points = json.load(f)["points"]
         except (OSError, ValueError, KeyError) as e:
-            fail("%s: not a campaign table (%s)" % (path, e))
+            fail("%s: not a campaign table (%s)" % (table, e))
         status = {}
         hours, untimed = 0.0, 0
         for p in points:
@@ -40,15 +37,25 @@ def main(argv):
             elif p.get("status") in ("done", "jammed", "failed"):
                 untimed += 1
         total += hours
-        name = os.path.relpath(os.path.dirname(os.path.abspath(table)))
-        name = name[len("results/"):] if name.startswith("results/") else name
         rows.append((name, len(points), ", ".join("%d %s" % (n, s) for s, n in sorted(status.items())), hours,
                      untimed))
-    print("| campaign | points | by status | core-hours | finished without a wall time |")
-    print("|---|---|---|---|---|")
+    lines = ["| campaign | points | by status | core-hours | finished without a wall time |", "|---|---|---|---|---|"]
     for name, n, by_status, hours, untimed in rows:
-        print("| %s | %d | %s | %.1f | %d |" % (name, n, by_status, hours, untimed))
-    print("| all | | | %.1f | |" % total)
+        lines.append("| %s | %d | %s | %.1f | %d |" % (name, n, by_status, hours, untimed))
+    lines.append("| all | | | %.1f | |" % total)
+    return "\n".join(lines) + "\n"
+
+
+def main(argv):
+    if not argv or argv[0] in ("-h", "--help"):
+        print(__doc__.strip(), file=sys.stderr)
+        sys.exit(2)
+    entries = []
+    for path in argv:
+        table = os.path.join(path, "campaign.json") if os.path.isdir(path) else path
+        name = os.path.relpath(os.path.dirname(os.path.abspath(table)))
+        entries.append((name[len("results/"):] if name.startswith("results/") else name, table))
+    sys.stdout.write(cost_table(entries))
 
 
 if __name__ == "__main__":

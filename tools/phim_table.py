@@ -13,7 +13,8 @@ the campaign's base case.
 With --check README, verifies that each table between `<!-- phim table: DIR -->` and `<!-- end phim table -->`, and
 each between `<!-- phim summary: DIR DIR ... -->` and `<!-- end phim summary -->`, in README is the one the phim.json
 files give now (exit 1 naming the first difference), so a page that drifts from its data fails the tests; --update
-README rewrites those tables from the data in place (tools/collect_results.sh runs it as the campaigns fill).
+README rewrites those tables from the data in place (tools/collect_results.sh runs it as the campaigns fill). Both do
+the same for `<!-- campaign cost: DIR ... -->` blocks, the core-hours of campaigns (tools/campaign_cost.py).
 
 usage: tools/phim_table.py PHIM_DIR | --summary PHIM_DIR... | --check README.md | --update README.md"""
 import json
@@ -21,6 +22,8 @@ import math
 import os
 import re
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 
 def usage(message=None):
@@ -157,9 +160,17 @@ def first_difference(readme, what, written, now):
     for k, (a, b) in enumerate(zip(written.splitlines() + [""] * 99, now.splitlines())):
         if a != b:
             print(f"{readme}: the table of {what} differs from its phim.json at row {k + 1}:\n  page: {a}\n"
-                  f"  data: {b}\n(regenerate it with tools/phim_table.py {what})")
+                  f"  data: {b}\n(regenerate it with tools/phim_table.py --update {readme})")
             return 1
     return 0
+
+
+def costs(base, folders):
+    from campaign_cost import cost_table  # tools/campaign_cost.py, beside this file
+    return cost_table([(d, os.path.join(base, d, "campaign.json")) for d in folders.split()])
+
+
+COST_BLOCK = r"<!-- campaign cost: ([^>]+?) -->\n(.*?)<!-- end campaign cost -->"
 
 
 def update(readme):
@@ -173,6 +184,8 @@ def update(readme):
     text = re.sub(r"(<!-- phim summary: ([^>]+?) -->\n)(.*?)(<!-- end phim summary -->)",
                   lambda m: m.group(1) + summary([os.path.join(base, d) for d in m.group(2).split()]) + m.group(4),
                   text, flags=re.S)
+    text = re.sub(COST_BLOCK, lambda m: m.group(0).split("-->\n", 1)[0] + "-->\n" + costs(base, m.group(1)) +
+                  "<!-- end campaign cost -->", text, flags=re.S)
     with open(readme + ".part", "w") as f:
         f.write(text)
     os.replace(readme + ".part", readme)
@@ -196,7 +209,12 @@ def check(readme):
         now = summary([os.path.join(base, d) for d in folders.split()])
         if written != now:
             return first_difference(readme, "--summary " + folders, written, now)
-    print(f"{readme}: {len(blocks)} phi_m table(s) and {len(summaries)} summary table(s) agree with their phim.json")
+    cost_blocks = re.findall(COST_BLOCK, text, re.S)
+    for folders, written in cost_blocks:
+        if written != costs(base, folders):
+            return first_difference(readme, "campaign cost " + folders, written, costs(base, folders))
+    print(f"{readme}: {len(blocks)} phi_m table(s), {len(summaries)} summary table(s) and {len(cost_blocks)} cost "
+          "table(s) agree with their campaigns")
     return 0
 
 
