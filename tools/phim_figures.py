@@ -38,6 +38,7 @@ SEARCHES = [
     ("fcm_boundary", ("fcm", "FCM", "....", 1.06)),
 ]
 SEARCH_DRAWN_WIDTH = 0.01  # drawn (replacing the one-seed group) once converged: the searches' tolerance
+YIELD_DRAWN_RATIO = 1.5  # a creep yield-stress bracket is drawn once its flowed end is within 1.5x its arrested end
 METHOD_STYLE = {"pairwise": dict(marker="o", linestyle="-", fillstyle="full"),
                 "fcm": dict(marker="s", linestyle="--", fillstyle="none")}
 METHOD_SHIFT = {"pairwise": 1.0, "fcm": 1.06}  # Fig. 15: FCM drawn 6% to the right of its sigma* for clarity
@@ -451,7 +452,8 @@ def figure_32(methods, searched, out):
 
 def yield_stress_brackets(results):
     """The yield stress by creep bisected in sigma* at fixed phi (results/phim/pairwise_yield_stress): per (mu_s, phi)
-    the largest stress at which most seeds arrested and the smallest at which most flowed."""
+    the largest stress at which most seeds arrested and the smallest at which most flowed, once that bracket is
+    narrower than YIELD_DRAWN_RATIO (a search still at its first halvings says little and would cover the figure)."""
     path = os.path.join(results, "pairwise_yield_stress", "campaign.json")
     if not os.path.isfile(path):
         return []
@@ -472,7 +474,7 @@ def yield_stress_brackets(results):
     for (mu, phi), tallies in sorted(levels.items()):
         arrested = [s for s, (j, f) in tallies.items() if j > f]
         flowed = [s for s, (j, f) in tallies.items() if f > j]
-        if arrested and flowed:
+        if arrested and flowed and min(flowed) <= YIELD_DRAWN_RATIO * max(arrested):
             out.append((mu, phi, max(arrested), min(flowed)))
     return out
 
