@@ -75,6 +75,21 @@ mkdir -p "$root/results/phim/constraint_fit"
 fit_boundaries pairwise_singular pairwise_boundary pairwise_boundary_low_friction pairwise_boundary_low_friction_low_stress
 fit_boundaries pairwise_exact pairwise_boundary_exact pairwise_boundary_exact_others pairwise_low_stress
 fit_boundaries fcm fcm_boundary fcm_boundary_low_friction
+# How far phi_m moves (issue 36): with the exact near field, with the box, between the methods, against the seeds'
+# spread (tools/boundary_shift.py), each once both sides have a table.
+boundary_shift() {  # boundary_shift NAME "A dirs" "B dirs"
+  local a=() b=() d
+  for d in $2; do [ -f "$root/results/phim/$d/campaign.json" ] && a+=("results/phim/$d"); done
+  for d in $3; do [ -f "$root/results/phim/$d/campaign.json" ] && b+=("results/phim/$d"); done
+  [ ${#a[@]} -gt 0 ] && [ ${#b[@]} -gt 0 ] || return 0
+  mkdir -p "$root/results/phim/shifts"
+  (cd "$root" && /usr/bin/python3 tools/boundary_shift.py "${a[@]}" --against "${b[@]}" > "results/phim/shifts/$1.txt")
+}
+boundary_shift exact_against_singular "pairwise_boundary pairwise_boundary_low_friction pairwise_boundary_low_friction_low_stress" \
+  "pairwise_boundary_exact_others"
+boundary_shift box20_against_box16 "pairwise_boundary_exact pairwise_boundary_exact_others" "pairwise_box20"
+boundary_shift fcm_against_pairwise_exact "pairwise_boundary_exact pairwise_boundary_exact_others" \
+  "fcm_boundary fcm_boundary_low_friction"
 /usr/bin/python3 "$root/tools/phim_figures.py" "$root/results/phim"
 # results/README.md's phi_m tables (one campaign each, and Fig. 15 over all of them) from the tables just fitted
 /usr/bin/python3 "$root/tools/phim_table.py" --update "$root/results/README.md"
