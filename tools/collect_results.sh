@@ -26,7 +26,8 @@ for entry in "phim_pairwise|pairwise" "phim_fcm|fcm" "pairwise_boundary|pairwise
     "pairwise_boundary_exact|pairwise_boundary_exact" "fcm_seed_scatter|fcm_seed_scatter" \
     "fcm_boundary|fcm_boundary" "pairwise_boundary_exact_others|pairwise_boundary_exact_others" \
     "pairwise_box20|pairwise_box20" "pairwise_low_stress|pairwise_low_stress" \
-    "fcm_boundary_low_friction|fcm_boundary_low_friction" "pairwise_yield_stress|pairwise_yield_stress"; do
+    "fcm_boundary_low_friction|fcm_boundary_low_friction" "fcm_low_stress|fcm_low_stress" \
+    "pairwise_yield_stress|pairwise_yield_stress"; do
   IFS='|' read -r name method <<< "$entry"
   out="$root/results/phim/$method"
   [ -f "$runs/$name/campaign.json" ] && copy_table "$runs/$name" "$out"
@@ -65,7 +66,8 @@ fit_boundaries() {  # NAME TABLE_FOLDER...
 }
 # Issue 36, item 5: shear banding in the flowing points of the boundary searches (from the raw runs' snapshots; the
 # committed rows are kept for points whose runs this machine does not have, a folder restored from its table).
-for name in pairwise_boundary_exact pairwise_boundary_exact_others pairwise_low_stress fcm_boundary pairwise_box20; do
+for name in pairwise_boundary_exact pairwise_boundary_exact_others pairwise_low_stress fcm_boundary fcm_low_stress \
+    pairwise_box20; do
   [ -d "$runs/$name/points" ] && [ -d "$root/results/phim/$name" ] || continue
   banding=$root/results/phim/$name/banding.txt
   /usr/bin/python3 "$root/tools/banding_check.py" "$runs/$name" --suspend "$suspend" --keep "$banding" \
@@ -74,7 +76,7 @@ done
 mkdir -p "$root/results/phim/constraint_fit"
 fit_boundaries pairwise_singular pairwise_boundary pairwise_boundary_low_friction pairwise_boundary_low_friction_low_stress
 fit_boundaries pairwise_exact pairwise_boundary_exact pairwise_boundary_exact_others pairwise_low_stress
-fit_boundaries fcm fcm_boundary fcm_boundary_low_friction
+fit_boundaries fcm fcm_boundary fcm_boundary_low_friction fcm_low_stress
 # How far phi_m moves (issue 36): with the exact near field, with the box, between the methods, against the seeds'
 # spread (tools/boundary_shift.py), each once both sides have a table.
 boundary_shift() {  # boundary_shift NAME "A dirs" "B dirs"
@@ -88,8 +90,8 @@ boundary_shift() {  # boundary_shift NAME "A dirs" "B dirs"
 boundary_shift exact_against_singular "pairwise_boundary pairwise_boundary_low_friction pairwise_boundary_low_friction_low_stress" \
   "pairwise_boundary_exact_others"
 boundary_shift box20_against_box16 "pairwise_boundary_exact pairwise_boundary_exact_others" "pairwise_box20"
-boundary_shift fcm_against_pairwise_exact "pairwise_boundary_exact pairwise_boundary_exact_others" \
-  "fcm_boundary fcm_boundary_low_friction"
+boundary_shift fcm_against_pairwise_exact "pairwise_boundary_exact pairwise_boundary_exact_others pairwise_low_stress" \
+  "fcm_boundary fcm_boundary_low_friction fcm_low_stress"
 /usr/bin/python3 "$root/tools/phim_figures.py" "$root/results/phim"
 # results/README.md's phi_m tables (one campaign each, and Fig. 15 over all of them) from the tables just fitted
 /usr/bin/python3 "$root/tools/phim_table.py" --update "$root/results/README.md"

@@ -36,6 +36,7 @@ SEARCHES = [
     ("pairwise_box20", ("pairwise", "pairwise, exact, $(20 a_1)^3$ box", "xxxx", 0.90)),
     ("pairwise_boundary", ("pairwise", "pairwise, singular near field", "/////", 1.0)),
     ("fcm_boundary", ("fcm", "FCM", "....", 1.06)),
+    ("fcm_low_stress", ("fcm", "FCM", "....", 1.06)),
 ]
 SEARCH_DRAWN_WIDTH = 0.01  # drawn (replacing the one-seed group) once converged: the searches' tolerance
 YIELD_DRAWN_RATIO = 1.5  # a creep yield-stress bracket is drawn once its flowed end is within 1.5x its arrested end

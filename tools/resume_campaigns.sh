@@ -8,8 +8,9 @@
 # functions (runs/pairwise_boundary_exact, cases/phim/pairwise_boundary_exact.yaml), then in the issue's order of
 # value FCM at mu_s 0.3 and 1 (fcm_boundary), the yield stress by creep bisected in sigma*
 # (pairwise_yield_stress), the exact near field at mu_s 0, 0.1 and 0.5 (pairwise_boundary_exact_others), the
-# (20 a_1)^3 box (pairwise_box20), sigma* 0.5 and 0.3 (pairwise_low_stress) and FCM at the low frictions
-# (fcm_boundary_low_friction), each from cases/phim/NAME.yaml into runs/NAME;
+# (20 a_1)^3 box (pairwise_box20), sigma* 0.5 and 0.3 (pairwise_low_stress), FCM at the low frictions
+# (fcm_boundary_low_friction) and FCM at sigma* 0.5 and 0.3 (fcm_low_stress), each from cases/phim/NAME.yaml into
+# runs/NAME;
 # issue 35's accuracy ensembles of the default step (runs/step_frictionless, runs/step_ensemble: the packings of
 # each case run by the current engine, set against the same campaigns run by the engine before issue 35,
 # runs/step_*_before with a binary built at 2fbb67f, and runs/step_particles: the former step rule with the current
@@ -67,6 +68,7 @@ campaigns=(
   "pairwise_box20|$root/cases/phim/pairwise_box20.yaml|$root/results/phim/pairwise_box20/campaign.json"
   "pairwise_low_stress|$root/cases/phim/pairwise_low_stress.yaml|$root/results/phim/pairwise_low_stress/campaign.json"
   "fcm_boundary_low_friction|$root/cases/phim/fcm_boundary_low_friction.yaml|$root/results/phim/fcm_boundary_low_friction/campaign.json"
+  "fcm_low_stress|$root/cases/phim/fcm_low_stress.yaml|$root/results/phim/fcm_low_stress/campaign.json"
   "step_reference|$root/cases/validation/step_control_ensemble_reference.yaml|$root/results/step_control/adhesive_reference/campaign.json"
   "step_bounds|$root/cases/validation/step_control_ensemble_bounds.yaml|$root/results/step_control/adhesive_bounds/campaign.json"
   "pairwise_boundary|$root/cases/phim/pairwise_boundary.yaml|$root/results/phim/pairwise_boundary/campaign.json"
