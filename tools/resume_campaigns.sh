@@ -18,7 +18,8 @@
 # the converged reference the first ensembles showed is needed: packings 6-10 pair it with
 # all ten of the default, then runs/step_bounds: each of its two bounds halved alone; runs/step_frictionless_diagnostic: what moves the
 # frictionless case's contacts per particle; docs/performance.md section f). Issue 36's campaigns run first, in the
-# issue's order of value; the finished issues' few unfinished points (issues 35 and 40) follow. A campaign folder that a new machine lacks is first rebuilt
+# issue's order of value (pairwise_boundary_exact again after FCM for the sigma* 10 groups added to it); the finished
+# issues' few unfinished points (issues 35 and 40) follow. A campaign folder that a new machine lacks is first rebuilt
 # from the committed table where there is one (tools/restore_campaign.py), so only unfinished points run (a finished
 # campaign costs nothing). The binary is copied to RUNS/bin/suspend-campaign, so that rebuilding build/ meanwhile
 # does not change what runs. One background job runs the sweeps in turn (two sweeps started side by side share the
@@ -63,6 +64,7 @@ fi
 # name | campaign file | committed table
 campaigns=(
   "fcm_boundary|$root/cases/phim/fcm_boundary.yaml|$root/results/phim/fcm_boundary/campaign.json"
+  "pairwise_boundary_exact|$root/cases/phim/pairwise_boundary_exact.yaml|$root/results/phim/pairwise_boundary_exact/campaign.json"
   "pairwise_yield_stress|$root/cases/phim/pairwise_yield_stress.yaml|$root/results/phim/pairwise_yield_stress/campaign.json"
   "pairwise_boundary_exact_others|$root/cases/phim/pairwise_boundary_exact_others.yaml|$root/results/phim/pairwise_boundary_exact_others/campaign.json"
   "pairwise_box20|$root/cases/phim/pairwise_box20.yaml|$root/results/phim/pairwise_box20/campaign.json"
@@ -77,7 +79,6 @@ campaigns=(
   "pairwise_boundary_low_friction_low_stress|$root/cases/phim/pairwise_boundary_low_friction_low_stress.yaml|$root/results/phim/pairwise_boundary_low_friction_low_stress/campaign.json"
   "normal_stress_functions|$root/cases/validation/normal_stress_functions.yaml|$root/results/normal_stress_functions/campaign.json"
   "normal_stress_frictional|$root/cases/validation/normal_stress_frictional.yaml|$root/results/normal_stress_frictional/campaign.json"
-  "pairwise_boundary_exact|$root/cases/phim/pairwise_boundary_exact.yaml|$root/results/phim/pairwise_boundary_exact/campaign.json"
   "step_frictionless|$root/cases/validation/step_control_ensemble_frictionless.yaml|$root/results/step_control/frictionless_after/campaign.json"
   "step_ensemble|$root/cases/validation/step_control_ensemble.yaml|$root/results/step_control/adhesive_after/campaign.json"
   "step_particles|$root/cases/validation/step_control_ensemble_particles.yaml|$root/results/step_control/adhesive_particles/campaign.json"
