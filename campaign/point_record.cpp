@@ -19,6 +19,7 @@ PointRecord read_record(const fs::path& point_dir) {
   r.exit_code = j.value("exit_code", r.exit_code);
   r.message = j.value("message", r.message);
   r.wall_seconds = j.value("wall_seconds", r.wall_seconds);
+  r.cpu_seconds = j.value("cpu_seconds", r.cpu_seconds);
   r.runs = j.value("runs", r.runs);
   r.initial = j.value("initial", r.initial);
   return r;
@@ -26,7 +27,8 @@ PointRecord read_record(const fs::path& point_dir) {
 
 void write_record(const fs::path& point_dir, const PointRecord& r) {
   nlohmann::ordered_json j = {{"status", r.status},   {"exit_code", r.exit_code}, {"message", r.message},
-                              {"wall_seconds", r.wall_seconds}, {"runs", r.runs}};
+                              {"wall_seconds", r.wall_seconds}, {"cpu_seconds", r.cpu_seconds},
+                              {"runs", r.runs}};
   if (!r.initial.empty()) j["initial"] = r.initial;
   io::write_text_atomically((point_dir / "point.json").string(), j.dump(2) + "\n");
 }

@@ -17,6 +17,9 @@ struct PointRecord {
   int exit_code = -1;  // of the last run; -1 when none ended yet
   std::string message;  // why it failed or jammed, from the run's last error line
   double wall_seconds = 0.0;  // summed over every run of the point
+  // The CPU time (user + system) of its runs, summed: the cost of the point, which wall time overstates while the
+  // machine is shared or the sweep is paused (SIGSTOP) or its record restored from a table that had only wall time.
+  double cpu_seconds = 0.0;
   int runs = 0;               // times it was started (1 + restarts)
   // The particles.initial the point started from when it is not its own packing (a searched point started from a
   // flowing state, campaign/search.hpp); empty otherwise. Kept so that a replayed search lists the start of a

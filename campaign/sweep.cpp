@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,11 +11,14 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <deque>
 #include <fstream>
+#include <iterator>
 #include <map>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -83,6 +87,27 @@ bool recover_ended_run(const fs::path& point_dir, PointRecord& r) {
   r.message = status == "jammed" ? last_reason(point_dir / "log.txt") : std::string();
   write_record(point_dir, r);
   return true;
+}
+
+// The CPU time (user + system) a running child has used so far, from /proc/PID/stat (fields 14 and 15, in clock
+// ticks); 0 where that cannot be read.
+double cpu_seconds_so_far(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t name_end = text.rfind(')');  // the command name may hold spaces; the fields follow it
+  if (name_end == std::string::npos) return 0.0;
+  std::istringstream fields(text.substr(name_end + 1));
+  std::string field;
+  double ticks = 0.0;
+  for (int k = 3; k <= 15 && fields >> field; ++k)
+    if (k >= 14) ticks += std::strtod(field.c_str(), nullptr);
+  const long per_second = sysconf(_SC_CLK_TCK);
+  return per_second > 0 ? ticks / static_cast<double>(per_second) : 0.0;
+}
+
+double cpu_seconds_of(const rusage& u) {
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
 struct Job {
@@ -240,10 +265,11 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
 
   bool disk_full = false;  // a point stopped with exit_output_error
   bool not_started = false;  // a point's run could not be started: the program is missing or not executable
-  auto finish = [&](Job& j, int status) {
+  auto finish = [&](Job& j, int status, const rusage& usage) {
     const fs::path pd = point_dir(o.out_dir, *j.point);
     PointRecord& r = j.record;
     r.wall_seconds += std::chrono::duration<double>(Clock::now() - j.start).count();
+    r.cpu_seconds += cpu_seconds_of(usage);
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     r.exit_code = code;
     const std::string reason = last_reason(pd / "log.txt");
@@ -301,6 +327,7 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
       j.checkpointed = t;
       PointRecord so_far = j.record;
       so_far.wall_seconds += std::chrono::duration<double>(Clock::now() - j.start).count();
+      so_far.cpu_seconds += cpu_seconds_so_far(j.pid);
       write_record(pd, so_far);
     }
     for (Job& j : jobs)
@@ -310,11 +337,12 @@ int run_sweep(const Campaign& c, const SweepOptions& o) {
         j.over_budget = true;
       }
     int status = 0;
-    const pid_t done = waitpid(-1, &status, WNOHANG);
+    rusage usage{};
+    const pid_t done = wait4(-1, &status, WNOHANG, &usage);  // with the child's CPU time
     if (done > 0) {
       for (std::size_t k = 0; k < jobs.size(); ++k)
         if (jobs[k].pid == done) {
-          finish(jobs[k], status);
+          finish(jobs[k], status, usage);
           jobs.erase(jobs.begin() + static_cast<long>(k));
           break;
         }

@@ -105,6 +105,7 @@ json gather_table(const Campaign& c, const fs::path& dir) {
     for (const Assignment& a : p.parameters) e["parameters"][a.key] = json_value(a.value);
     e["case"] = case_facts(c, p);
     e["wall_seconds"] = r.wall_seconds;
+    if (r.cpu_seconds > 0.0) e["cpu_seconds"] = r.cpu_seconds;  // absent: run before the sweep recorded it
     if (!r.message.empty()) e["message"] = r.message;
     e["summary"] = nullptr;
     if (r.status == "done" || r.status == "jammed") {

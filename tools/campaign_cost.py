@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """The machine time of campaigns, from their tables: per campaign the points by status and the core-hours they took
-(each point runs on one thread, so its wall time is its core time; issue 36 asks for the CPU hours of every
-campaign). Points that ran before wall times were recorded count as 0 and are counted apart.
+(issue 36 asks for the CPU hours of every campaign): a point's CPU time (user + system, summed over its runs) where
+its table records one, else its wall time, which is the CPU time of a one-thread point on a quiet machine but also
+counts while the machine is shared or the sweep paused (SIGSTOP). The points costed by wall time are counted apart,
+and points that ran before wall times were recorded count as 0, also apart.
 
 usage: tools/campaign_cost.py CAMPAIGN_DIR_OR_campaign.json [...]
 """
@@ -28,21 +30,25 @@ def cost_table(entries):
         except (OSError, ValueError, KeyError) as e:
             fail("%s: not a campaign table (%s)" % (table, e))
         status = {}
-        hours, untimed = 0.0, 0
+        hours, untimed, by_wall = 0.0, 0, 0
         for p in points:
             status[p.get("status", "?")] = status.get(p.get("status", "?"), 0) + 1
-            seconds = p.get("wall_seconds")
+            seconds = p.get("cpu_seconds")
+            if not seconds:
+                seconds = p.get("wall_seconds")
+                by_wall += 1 if seconds else 0
             if seconds:
                 hours += seconds / 3600.0
             elif p.get("status") in ("done", "jammed", "failed"):
                 untimed += 1
         total += hours
         rows.append((name, len(points), ", ".join("%d %s" % (n, s) for s, n in sorted(status.items())), hours,
-                     untimed))
-    lines = ["| campaign | points | by status | core-hours | finished without a wall time |", "|---|---|---|---|---|"]
-    for name, n, by_status, hours, untimed in rows:
-        lines.append("| %s | %d | %s | %.1f | %d |" % (name, n, by_status, hours, untimed))
-    lines.append("| all | | | %.1f | |" % total)
+                     by_wall, untimed))
+    lines = ["| campaign | points | by status | core-hours | points costed by wall time | finished without a time |",
+             "|---|---|---|---|---|---|"]
+    for name, n, by_status, hours, by_wall, untimed in rows:
+        lines.append("| %s | %d | %s | %.1f | %d | %d |" % (name, n, by_status, hours, by_wall, untimed))
+    lines.append("| all | | | %.1f | | |" % total)
     return "\n".join(lines) + "\n"
 
 

@@ -49,7 +49,8 @@ def main():
             write_atomically(os.path.join(folder, "summary.json"), json.dumps(p["summary"], indent=2) + "\n")
         # core/error.hpp: exit_jammed 4; a failure's own code is not in the table, exit_numerical_error 3 stands for it
         record = {"status": p["status"], "exit_code": {"done": 0, "jammed": 4}.get(p["status"], 3),
-                  "message": p.get("message", ""), "wall_seconds": p["wall_seconds"], "runs": 1}
+                  "message": p.get("message", ""), "wall_seconds": p["wall_seconds"],
+                  "cpu_seconds": p.get("cpu_seconds", 0.0), "runs": 1}
         initial = (p.get("parameters") or {}).get("particles.initial")
         if initial:  # a searched point started from a flowing state (campaign/point_record.hpp)
             record["initial"] = initial

@@ -262,6 +262,7 @@ def concurrency(ctx, tally, rounds):
             return None
         for p in t["points"]:
             p.pop("wall_seconds", None)
+            p.pop("cpu_seconds", None)
         return t["points"]
     runs = []
     for name in os.listdir(os.path.join(shared, "points")) if os.path.isdir(os.path.join(shared, "points")) else []:

@@ -38,10 +38,10 @@ std::string campaign(const std::string& name, const std::string& extra_points = 
                               "  - {particles.phi: 0.5, contact.mu: 0.5}\n" + extra_points);
 }
 
-// campaign.json without what depends on the machine (wall time).
+// campaign.json without what depends on the machine (wall and CPU time).
 json table(const std::string& dir) {
   json t = json::parse(read_text(dir + "/campaign.json"));
-  for (json& p : t["points"]) p.erase("wall_seconds");
+  for (json& p : t["points"]) p.erase("wall_seconds"), p.erase("cpu_seconds");
   return t;
 }
 
@@ -62,6 +62,11 @@ TEST(Sweep, SameTableWithJobsAfterSigkillAndPointByPoint) {
   ASSERT_EQ(ra.code, 0) << ra.err;
   const json ta = table(a);
   ASSERT_EQ(ta["points"].size(), 3u);
+  // Each point's cost: its run's CPU time, at most its wall time on one thread (plus the clocks' granularity).
+  for (const json& p : json::parse(read_text(a + "/campaign.json"))["points"]) {
+    EXPECT_GT(p.value("cpu_seconds", 0.0), 0.0) << p["name"];
+    EXPECT_LE(p.value("cpu_seconds", 0.0), p["wall_seconds"].get<double>() + 0.05) << p["name"];
+  }
   for (const json& p : ta["points"]) {
     EXPECT_EQ(p["status"], "done") << p.dump();
     EXPECT_GT(p["summary"]["eta_r"]["mean"].get<double>(), 1.0) << p.dump();
