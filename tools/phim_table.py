@@ -173,12 +173,17 @@ def costs(base, folders):
 COST_BLOCK = r"<!-- campaign cost: ([^>]+?) -->\n(.*?)<!-- end campaign cost -->"
 
 
-def update(readme):
+def read_page(readme):
+    """The page's text and the folder its table paths are relative to."""
     try:
         text = open(readme).read()
     except OSError as e:
         usage(f"{readme}: {e}")
-    base = os.path.dirname(os.path.abspath(readme))
+    return text, os.path.dirname(os.path.abspath(readme))
+
+
+def update(readme):
+    text, base = read_page(readme)
     text = re.sub(r"(<!-- phim table: (\S+) -->\n)(.*?)(<!-- end phim table -->)",
                   lambda m: m.group(1) + table(os.path.join(base, m.group(2))) + m.group(4), text, flags=re.S)
     text = re.sub(r"(<!-- phim summary: ([^>]+?) -->\n)(.*?)(<!-- end phim summary -->)",
@@ -193,11 +198,7 @@ def update(readme):
 
 
 def check(readme):
-    try:
-        text = open(readme).read()
-    except OSError as e:
-        usage(f"{readme}: {e}")
-    base = os.path.dirname(os.path.abspath(readme))
+    text, base = read_page(readme)
     blocks = re.findall(r"<!-- phim table: (\S+) -->\n(.*?)<!-- end phim table -->", text, re.S)
     summaries = re.findall(r"<!-- phim summary: ([^>]+?) -->\n(.*?)<!-- end phim summary -->", text, re.S)
     if not blocks and not summaries:
